@@ -1,0 +1,496 @@
+/* ----------------------------------------------------------------------
+   compute fabric: see compute_fabric.h and doc/compute_fabric.md
+------------------------------------------------------------------------- */
+
+#include "compute_fabric.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+
+#include "atom.h"
+#include "comm.h"
+#include "compute_pair_gran_local.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "input.h"
+#include "memory.h"
+#include "modify.h"
+#include "region.h"
+#include "update.h"
+#include "variable.h"
+
+#include "allgather.h"
+#include "stability_index.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+constexpr double RAD2DEG = 180.0 / M_PI;
+
+// One contact as exchanged between ranks: tags, centres, force on atom a.
+enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, CONTACT_FIELDS };
+
+bool is_yes_no(const char *s) { return strcmp(s, "yes") == 0 || strcmp(s, "no") == 0; }
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
+  Compute(lammps, iarg, narg, arg),
+  nbins(18), estimator(Estimator::Unbiased), stability_flag(false),
+  rattlers_flag(false), histogram_flag(false), stress_flag(false),
+  area_value(0.0), area_varname(nullptr), area_ivar(-1),
+  idregion(nullptr), iregion(-1),
+  id_contacts(nullptr), own_contacts(false), contacts(nullptr),
+  gathered_step(-1), nparticles(0), nmax_atom(0)
+{
+  if (domain->dimension != 2)
+    error->all(FLERR, "Compute fabric requires dimension 2");
+  if (atom->tag_enable == 0)
+    error->all(FLERR, "Compute fabric requires atom IDs");
+  if (!atom->radius_flag)
+    error->all(FLERR, "Compute fabric requires atom style sphere (granular)");
+
+  // the base class leaves its output pointers uninitialised
+  vector = nullptr;
+  array = nullptr;
+  vector_atom = nullptr;
+  array_atom = nullptr;
+  vector_local = nullptr;
+  array_local = nullptr;
+
+  parse_args(iarg, narg, arg);
+
+  vector_flag = 1;
+  size_vector = VECTOR_SIZE;
+  extvector = 0;
+  memory->create(vector, VECTOR_SIZE, "fabric:vector");
+  std::fill(vector, vector + VECTOR_SIZE, 0.0);
+
+  if (histogram_flag) {
+    array_flag = 1;
+    size_array_rows = nbins;
+    size_array_cols = 4;
+    extarray = 0;
+    memory->create(array, nbins, 4, "fabric:array");
+  }
+
+  // per-atom: contact count, stability index
+  peratom_flag = 1;
+  size_peratom_cols = 2;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeFabric::parse_args(int iarg, int narg, char **arg)
+{
+  while (iarg < narg) {
+    const char *key = arg[iarg];
+    if (iarg + 1 >= narg)
+      error->all(FLERR, (std::string("Illegal compute fabric command: keyword '") + key +
+                         "' needs a value").c_str());
+    const char *value = arg[iarg + 1];
+    if (strcmp(key, "bins") == 0) {
+      char *end = nullptr;
+      long n = strtol(value, &end, 10);
+      if (*end != '\0' || n < 4 || n > 3600 || n % 2 != 0)
+        error->all(FLERR, "Illegal compute fabric command: 'bins' must be an even integer from 4 to 3600");
+      nbins = static_cast<int>(n);
+    } else if (strcmp(key, "estimator") == 0) {
+      if (strcmp(value, "unbiased") == 0) estimator = Estimator::Unbiased;
+      else if (strcmp(value, "published") == 0) estimator = Estimator::Published;
+      else if (strcmp(value, "tensor") == 0) estimator = Estimator::Tensor;
+      else error->all(FLERR, "Illegal compute fabric command: 'estimator' must be unbiased, published or tensor");
+    } else if (strcmp(key, "stability") == 0 || strcmp(key, "rattlers") == 0 ||
+               strcmp(key, "histogram") == 0) {
+      if (!is_yes_no(value))
+        error->all(FLERR, (std::string("Illegal compute fabric command: '") + key +
+                           "' must be yes or no").c_str());
+      const bool on = strcmp(value, "yes") == 0;
+      if (key[0] == 's') stability_flag = on;
+      else if (key[0] == 'r') rattlers_flag = on;
+      else histogram_flag = on;
+    } else if (strcmp(key, "stress") == 0) {
+      stress_flag = true;
+      if (strncmp(value, "v_", 2) == 0) {
+        area_varname = new char[strlen(value + 2) + 1];
+        strcpy(area_varname, value + 2);
+      } else {
+        char *end = nullptr;
+        area_value = strtod(value, &end);
+        if (*end != '\0' || !(area_value > 0.0) || !std::isfinite(area_value))
+          error->all(FLERR, "Illegal compute fabric command: 'stress' needs a positive area or v_name");
+      }
+    } else if (strcmp(key, "region") == 0) {
+      if (domain->find_region(value) < 0)
+        error->all(FLERR, (std::string("Compute fabric: region '") + value + "' does not exist").c_str());
+      idregion = new char[strlen(value) + 1];
+      strcpy(idregion, value);
+    } else {
+      error->all(FLERR, (std::string("Illegal compute fabric command: unknown keyword '") +
+                         key + "'").c_str());
+    }
+    iarg += 2;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+ComputeFabric::~ComputeFabric()
+{
+  memory->destroy(vector);
+  memory->destroy(array);
+  memory->destroy(array_atom);
+  delete[] area_varname;
+  delete[] idregion;
+  delete[] id_contacts;
+}
+
+/* ----------------------------------------------------------------------
+   Contact forces come from LIGGGHTS' own compute pair/gran/local: the pair
+   style evaluates its contact model again at the current positions with the
+   stored contact history (not updated), so these are the forces the pair
+   applied this step. A pair style accepts only one such compute: reuse the
+   user's if there is one, else create ours.
+------------------------------------------------------------------------- */
+
+void ComputeFabric::post_create()
+{
+  find_contacts_compute();
+  if (contacts) return;
+
+  std::string cid = std::string(id) + "_contacts";
+  id_contacts = new char[cid.size() + 1];
+  strcpy(id_contacts, cid.c_str());
+  own_contacts = true;
+
+  char *args[6];
+  args[0] = id_contacts;
+  args[1] = group->names[igroup];
+  args[2] = (char *) "pair/gran/local";
+  args[3] = (char *) "pos";
+  args[4] = (char *) "id";
+  args[5] = (char *) "force";
+  modify->add_compute(6, args);
+  contacts = static_cast<ComputePairGranLocal *>(modify->compute[modify->ncompute - 1]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeFabric::find_contacts_compute()
+{
+  contacts = nullptr;
+  for (int i = 0; i < modify->ncompute; i++) {
+    Compute *c = modify->compute[i];
+    if (c == this || strcmp(c->style, "pair/gran/local") != 0) continue;
+    if (id_contacts && strcmp(c->id, id_contacts) == 0) {
+      contacts = static_cast<ComputePairGranLocal *>(c);
+      continue;
+    }
+    if (contacts && own_contacts)
+      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id +
+                         " (pair/gran/local) is defined after compute fabric; a granular pair style "
+                         "accepts only one: define it before compute fabric, with the values "
+                         "'pos id force', and compute fabric will read it").c_str());
+    if (!contacts) {
+      ComputePairGranLocal *user = static_cast<ComputePairGranLocal *>(c);
+      if (user->offset_x1() < 0 || user->offset_id1() < 0 || user->offset_f() < 0)
+        error->all(FLERR, (std::string("Compute fabric: existing compute ") + c->id +
+                           " (pair/gran/local) must include the values 'pos id force' "
+                           "for compute fabric to read it").c_str());
+      if (c->igroup != 0 && c->igroup != igroup)
+        error->all(FLERR, (std::string("Compute fabric: existing compute ") + c->id +
+                           " (pair/gran/local) must use group all or the group of compute fabric").c_str());
+      contacts = user;
+      id_contacts = new char[strlen(c->id) + 1];
+      strcpy(id_contacts, c->id);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeFabric::init()
+{
+  find_contacts_compute();
+  if (!contacts)
+    error->all(FLERR, "Compute fabric: its compute pair/gran/local was deleted");
+
+  if (idregion) {
+    iregion = domain->find_region(idregion);
+    if (iregion < 0)
+      error->all(FLERR, (std::string("Compute fabric: region '") + idregion + "' does not exist").c_str());
+  }
+  if (area_varname) {
+    area_ivar = input->variable->find(area_varname);
+    if (area_ivar < 0)
+      error->all(FLERR, (std::string("Compute fabric: variable '") + area_varname +
+                         "' for the stress area does not exist").c_str());
+    if (!input->variable->equalstyle(area_ivar))
+      error->all(FLERR, (std::string("Compute fabric: variable '") + area_varname +
+                         "' for the stress area must be equal-style").c_str());
+  }
+  gathered_step = -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool ComputeFabric::atom_selected(int i) const
+{
+  if (!(atom->mask[i] & groupbit)) return false;
+  if (iregion < 0) return true;
+  double **x = atom->x;
+  return domain->regions[iregion]->match(x[i][0], x[i][1], x[i][2]) != 0;
+}
+
+/* ----------------------------------------------------------------------
+   Every rank ends with the same contact list, sorted by (tag a, tag b) with
+   tag a < tag b, so every statistic is summed in the same order whatever the
+   number of ranks. pair/gran/local already reports a contact across a
+   processor boundary on one rank only (newton off: the smaller tag's side).
+------------------------------------------------------------------------- */
+
+void ComputeFabric::gather_contacts()
+{
+  if (gathered_step == update->ntimestep) return;
+  gathered_step = update->ntimestep;
+
+  if (contacts->invoked_local != update->ntimestep) contacts->compute_local();
+
+  const int nrows = contacts->size_local_rows;
+  double **rows = contacts->get_data();
+  const int ox = contacts->offset_x1(), oid = contacts->offset_id1(), of = contacts->offset_f();
+  const bool use_region = iregion >= 0;
+  Region *region = use_region ? domain->regions[iregion] : nullptr;
+
+  sendbuf.clear();
+  for (int r = 0; r < nrows; r++) {
+    const double *row = rows[r];
+    const double *xa = row + ox, *xb = row + ox + 3;
+    if (use_region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
+      continue;
+    double rec[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
+                                  row[of], row[of + 1]};
+    if (rec[TAG_A] > rec[TAG_B]) {
+      // make a the smaller tag; the force on the new a is minus the old one
+      std::swap(rec[TAG_A], rec[TAG_B]);
+      std::swap(rec[XA], rec[XB]);
+      std::swap(rec[YA], rec[YB]);
+      rec[FAX] = -rec[FAX];
+      rec[FAY] = -rec[FAY];
+    }
+    sendbuf.insert(sendbuf.end(), rec, rec + CONTACT_FIELDS);
+  }
+
+  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
+
+  const int ncontacts = static_cast<int>(recvbuf.size()) / CONTACT_FIELDS;
+  std::vector<int> order(ncontacts);
+  for (int c = 0; c < ncontacts; c++) order[c] = c;
+  const double *buf = recvbuf.data();
+  std::sort(order.begin(), order.end(), [buf](int p, int q) {
+    const double *a = buf + p * CONTACT_FIELDS, *b = buf + q * CONTACT_FIELDS;
+    return a[TAG_A] < b[TAG_A] || (a[TAG_A] == b[TAG_A] && a[TAG_B] < b[TAG_B]);
+  });
+
+  contact_list.resize(ncontacts);
+  for (int c = 0; c < ncontacts; c++) {
+    const double *rec = buf + order[c] * CONTACT_FIELDS;
+    fabric::Contact &k = contact_list[c];
+    k.a = static_cast<long>(rec[TAG_A]);
+    k.b = static_cast<long>(rec[TAG_B]);
+    // positions are remapped into the box: undo a periodic wrap
+    double dz = 0.0;
+    k.lx = rec[XB] - rec[XA];
+    k.ly = rec[YB] - rec[YA];
+    domain->minimum_image(k.lx, k.ly, dz);
+    const double len = std::sqrt(k.lx * k.lx + k.ly * k.ly);
+    k.nx = k.lx / len;
+    k.ny = k.ly / len;
+    // force on b from a is minus the force on a from b
+    const double fbx = -rec[FAX], fby = -rec[FAY];
+    k.fn = fbx * k.nx + fby * k.ny;
+    k.ft = -fbx * k.ny + fby * k.nx;
+  }
+
+  long nlocal_selected = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom_selected(i)) nlocal_selected++;
+  MPI_Allreduce(&nlocal_selected, &nparticles, 1, MPI_LONG, MPI_SUM, world);
+}
+
+/* ----------------------------------------------------------------------
+   contact count of every selected particle, in tag order; particles
+   without contacts count as zeros
+------------------------------------------------------------------------- */
+
+std::vector<int> ComputeFabric::contacts_per_particle() const
+{
+  std::unordered_map<long, int> count;
+  count.reserve(2 * contact_list.size());
+  for (const fabric::Contact &k : contact_list) {
+    count[k.a]++;
+    count[k.b]++;
+  }
+  std::vector<int> per_particle;
+  per_particle.reserve(nparticles);
+  for (const auto &entry : count) per_particle.push_back(entry.second);
+  per_particle.resize(std::max<long>(nparticles, per_particle.size()), 0);
+  std::sort(per_particle.begin(), per_particle.end());
+  return per_particle;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeFabric::sample_area()
+{
+  if (!area_varname) return area_value;
+  const double area = input->variable->compute_equal(area_ivar);
+  if (!(area > 0.0) || !std::isfinite(area))
+    error->all(FLERR, "Compute fabric: the stress area variable is not a positive number");
+  return area;
+}
+
+/* ----------------------------------------------------------------------
+   mean stability index over the particles with >= 2 contacts (rattlers
+   with 0 or 1 contact count as 1 when 'rattlers yes')
+------------------------------------------------------------------------- */
+
+double ComputeFabric::mean_stability_index() const
+{
+  std::unordered_map<long, std::vector<double>> angles;
+  angles.reserve(2 * contact_list.size());
+  for (const fabric::Contact &k : contact_list) {
+    const double theta = std::atan2(k.ny, k.nx);
+    angles[k.a].push_back(theta);
+    angles[k.b].push_back(theta + M_PI);
+  }
+  // sum in tag order so the result does not depend on hashing
+  std::vector<std::pair<long, double>> values;
+  values.reserve(angles.size());
+  for (auto &entry : angles)
+    if (entry.second.size() >= 2)
+      values.emplace_back(entry.first, fabric::stability_index(entry.second));
+  std::sort(values.begin(), values.end());
+  double sum = 0.0;
+  for (const auto &v : values) sum += v.second;
+  long n = static_cast<long>(values.size());
+  if (rattlers_flag) {
+    const long rattlers = nparticles - n;
+    sum += static_cast<double>(rattlers);
+    n = nparticles;
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeFabric::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  gather_contacts();
+
+  std::fill(vector, vector + VECTOR_SIZE, 0.0);
+  const fabric::BinCorrection correction = estimator == Estimator::Published
+                                               ? fabric::BinCorrection::Published
+                                               : fabric::BinCorrection::Unbiased;
+  fabric::Anisotropy fabric_a;
+  fabric::ForceAnisotropy force_a;
+  if (estimator == Estimator::Tensor) {
+    fabric_a = fabric::normal_anisotropy_tensor(contact_list);
+    force_a = fabric::force_anisotropy_tensor(contact_list, fabric_a);
+  } else {
+    const fabric::Histogram hist = fabric::polar_histogram(contact_list, nbins);
+    fabric_a = fabric::normal_anisotropy_histogram(hist, correction);
+    force_a = fabric::force_anisotropy_histogram(hist, correction);
+  }
+  vector[A] = fabric_a.a;
+  vector[THETA_A] = fabric_a.theta * RAD2DEG;
+  vector[A_N] = force_a.an;
+  vector[THETA_N] = force_a.theta_n * RAD2DEG;
+  vector[F0] = force_a.f0;
+  vector[A_T] = force_a.at;
+  vector[THETA_T] = force_a.theta_t * RAD2DEG;
+  vector[EMPTY_BINS] = force_a.empty_bins;
+
+  const fabric::Coordination coord = fabric::coordination(contacts_per_particle());
+  vector[CN] = coord.Cn;
+  vector[ZM] = coord.Zm;
+  vector[NCONTACT] = static_cast<double>(contact_list.size());
+  vector[NPARTICLE] = static_cast<double>(nparticles);
+
+  if (stability_flag) vector[MEAN_GSI] = mean_stability_index();
+
+  if (stress_flag) {
+    const Eigen::Matrix2d sigma = fabric::love_weber_stress(contact_list, sample_area());
+    vector[SXX] = sigma(0, 0);
+    vector[SYY] = sigma(1, 1);
+    vector[SXY] = 0.5 * (sigma(0, 1) + sigma(1, 0));
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeFabric::compute_array()
+{
+  invoked_array = update->ntimestep;
+  gather_contacts();
+  const fabric::Histogram hist = fabric::polar_histogram(contact_list, nbins);
+  const double width = 2.0 * M_PI / nbins;
+  for (int g = 0; g < nbins; g++) {
+    array[g][0] = (g + 0.5) * width * RAD2DEG;
+    array[g][1] = hist.count[g];
+    array[g][2] = hist.mean_fn[g];
+    array[g][3] = hist.mean_ft[g];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   per-atom contact count and stability index (1 for < 2 contacts);
+   computed only when a dump or variable asks for them
+------------------------------------------------------------------------- */
+
+void ComputeFabric::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  gather_contacts();
+
+  if (atom->nmax > nmax_atom) {
+    memory->destroy(array_atom);
+    nmax_atom = atom->nmax;
+    memory->create(array_atom, nmax_atom, 2, "fabric:array_atom");
+  }
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) array_atom[i][0] = array_atom[i][1] = 0.0;
+
+  std::vector<std::vector<double>> angles(nlocal);
+  for (const fabric::Contact &k : contact_list) {
+    const double theta = std::atan2(k.ny, k.nx);
+    const int ia = atom->map(static_cast<int>(k.a));
+    const int ib = atom->map(static_cast<int>(k.b));
+    if (ia >= 0 && ia < nlocal) angles[ia].push_back(theta);
+    if (ib >= 0 && ib < nlocal) angles[ib].push_back(theta + M_PI);
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (!atom_selected(i)) continue;
+    array_atom[i][0] = static_cast<double>(angles[i].size());
+    array_atom[i][1] = fabric::stability_index(angles[i]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeFabric::memory_usage()
+{
+  double bytes = contact_list.capacity() * sizeof(fabric::Contact);
+  bytes += (sendbuf.capacity() + recvbuf.capacity()) * sizeof(double);
+  bytes += 2.0 * nmax_atom * sizeof(double);
+  return bytes;
+}

@@ -1,0 +1,81 @@
+/* ----------------------------------------------------------------------
+   compute fabric: contact-normal and contact-force fabric of a 2D
+   granular assembly (Rothenburg & Bathurst 1989), coordination numbers,
+   geometrical stability index (Momeni et al. 2022) and Love-Weber stress.
+   See doc/compute_fabric.md. Mathematics in fabric_statistics.h and
+   stability_index.h (no LIGGGHTS); this class gathers contacts only.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+
+ComputeStyle(fabric,ComputeFabric)
+
+#else
+
+#ifndef LMP_COMPUTE_FABRIC_H
+#define LMP_COMPUTE_FABRIC_H
+
+#include <vector>
+
+#include "compute.h"
+#include "fabric_statistics.h"
+
+namespace LAMMPS_NS {
+
+class ComputeFabric : public Compute {
+ public:
+  ComputeFabric(class LAMMPS *, int &iarg, int, char **);
+  ~ComputeFabric();
+  void post_create();
+  void init();
+  void compute_vector();
+  void compute_array();
+  void compute_peratom();
+  double memory_usage();
+
+  // global vector layout (1-based in input scripts: c_ID[k])
+  enum VectorIndex {
+    A = 0, THETA_A, A_N, THETA_N, F0, A_T, THETA_T, CN, ZM, NCONTACT,
+    NPARTICLE, EMPTY_BINS, MEAN_GSI, SXX, SYY, SXY, VECTOR_SIZE
+  };
+
+ private:
+  enum class Estimator { Unbiased, Published, Tensor };
+
+  int nbins;
+  Estimator estimator;
+  bool stability_flag;     // mean GSI in the vector
+  bool rattlers_flag;      // include particles with < 2 contacts in the mean GSI
+  bool histogram_flag;     // polar histograms as global array
+  bool stress_flag;
+  double area_value;       // Love-Weber area when given as a number
+  char *area_varname;      // ... or as an equal-style variable
+  int area_ivar;
+  char *idregion;
+  int iregion;
+
+  char *id_contacts;       // compute pair/gran/local that reports contact forces
+  bool own_contacts;       // true if this compute created it
+  class ComputePairGranLocal *contacts;
+
+  bigint gathered_step;    // timestep of the contact list below
+  std::vector<fabric::Contact> contact_list;   // all contacts, identical on every rank
+  std::vector<double> sendbuf, recvbuf;
+  std::vector<int> recvcounts, displs;
+  long nparticles;         // particles in group (and region)
+
+  int nmax_atom;
+
+  void parse_args(int iarg, int narg, char **arg);
+  void find_contacts_compute();
+  void gather_contacts();
+  bool atom_selected(int i) const;
+  double sample_area();
+  std::vector<int> contacts_per_particle() const;
+  double mean_stability_index() const;
+};
+
+}
+
+#endif
+#endif

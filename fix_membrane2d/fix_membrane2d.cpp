@@ -1,0 +1,647 @@
+/* ----------------------------------------------------------------------
+   fix membrane2d: see fix_membrane2d.h and doc/fix_membrane2d.md
+
+   Every rank gathers the same side bands (tag, x, y, r, type), sorted by
+   tag, and runs the same chain search, so the chain never depends on the
+   number of ranks; forces are added to owned atoms only.
+------------------------------------------------------------------------- */
+
+#include "fix_membrane2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_property_global.h"
+#include "force.h"
+#include "input.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+#include "allgather.h"
+#include "grain_size.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using membrane::Disk;
+using membrane::Side;
+
+namespace {
+
+enum { LEFT = 0, RIGHT = 1 };
+const char *side_name(int s) { return s == LEFT ? "left" : "right"; }
+
+enum BandField { B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
+
+std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
+  Fix(lammps, narg, arg),
+  thickness(1.0), band_width(-1.0), tolerance(-1.0), d50(0.0), detect_every(1),
+  membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
+  pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true),
+  redetections(0), failures(0), nmax_flag(0)
+{
+  if (domain->dimension != 2)
+    error->all(FLERR, msg("requires dimension 2").c_str());
+  if (!atom->radius_flag)
+    error->all(FLERR, msg("requires atom style sphere (granular)").c_str());
+  if (atom->tag_enable == 0 || atom->map_style == 0)
+    error->all(FLERR, msg("requires atom IDs and an atom map (atom_modify map array)").c_str());
+
+  sides[LEFT].side = Side::Left;
+  sides[RIGHT].side = Side::Right;
+  sides[LEFT].active = sides[RIGHT].active = true;
+
+  bool have_pressure = false, have_ylo = false, have_yhi = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg)
+      error->all(FLERR, msg("keyword '" + key + "' needs a value").c_str());
+    const char *value = arg[iarg + 1];
+    auto positive_number = [&](const char *what) {
+      char *end = nullptr;
+      const double v = strtod(value, &end);
+      if (*end != '\0' || !(v > 0.0) || !std::isfinite(v))
+        error->all(FLERR, msg(std::string(what) + " must be a positive number, got '" + value + "'").c_str());
+      return v;
+    };
+    if (key == "pressure") {
+      parse_input(pressure_in, value, "pressure");
+      if (!pressure_in.varname && !(pressure_in.value >= 0.0))
+        error->all(FLERR, msg(std::string("pressure must be >= 0, got '") + value + "'").c_str());
+      have_pressure = true;
+    } else if (key == "ylo") {
+      parse_input(ylo_in, value, "ylo");
+      have_ylo = true;
+    } else if (key == "yhi") {
+      parse_input(yhi_in, value, "yhi");
+      have_yhi = true;
+    } else if (key == "sides") {
+      const std::string v = value;
+      if (v != "left" && v != "right" && v != "both")
+        error->all(FLERR, msg("sides must be left, right or both").c_str());
+      sides[LEFT].active = v != "right";
+      sides[RIGHT].active = v != "left";
+    } else if (key == "band") {
+      band_width = positive_number("band");
+    } else if (key == "tolerance") {
+      char *end = nullptr;
+      tolerance = strtod(value, &end);
+      if (*end != '\0' || !(tolerance >= 0.0) || !std::isfinite(tolerance))
+        error->all(FLERR, msg(std::string("tolerance must be a number >= 0, got '") + value + "'").c_str());
+    } else if (key == "thickness") {
+      thickness = positive_number("thickness");
+    } else if (key == "every") {
+      char *end = nullptr;
+      const long n = strtol(value, &end, 10);
+      if (*end != '\0' || n < 1 || n > 1000000000L)
+        error->all(FLERR, msg(std::string("every must be an integer >= 1, got '") + value + "'").c_str());
+      detect_every = static_cast<int>(n);
+    } else if (key == "frictionless") {
+      char *end = nullptr;
+      const long t = strtol(value, &end, 10);
+      if (*end != '\0' || t < 1 || t > atom->ntypes)
+        error->all(FLERR, msg(std::string("frictionless needs an atom type from 1 to ntypes, got '") +
+                              value + "'").c_str());
+      membrane_type = static_cast<int>(t);
+    } else if (key == "polyline") {
+      if (iarg + 2 >= narg)
+        error->all(FLERR, msg("polyline needs N and a file name").c_str());
+      char *end = nullptr;
+      const long n = strtol(value, &end, 10);
+      if (*end != '\0' || n < 1)
+        error->all(FLERR, msg(std::string("polyline N must be an integer >= 1, got '") + value + "'").c_str());
+      polyline_every = n;
+      polyline_file = new char[strlen(arg[iarg + 2]) + 1];
+      strcpy(polyline_file, arg[iarg + 2]);
+      iarg++;
+    } else {
+      error->all(FLERR, msg("unknown keyword '" + key + "'").c_str());
+    }
+    iarg += 2;
+  }
+  if (!have_pressure) error->all(FLERR, msg("missing keyword 'pressure'").c_str());
+  if (!have_ylo) error->all(FLERR, msg("missing keyword 'ylo' (bottom platen)").c_str());
+  if (!have_yhi) error->all(FLERR, msg("missing keyword 'yhi' (top platen)").c_str());
+
+  vector_flag = 1;
+  size_vector = VECTOR_SIZE;
+  global_freq = 1;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  peratom_freq = 1;
+  restart_global = 1;
+  vector_atom = nullptr;
+  std::fill(vector_values, vector_values + VECTOR_SIZE, 0.0);
+
+  if (polyline_file && comm->me == 0) {
+    polyline_fp = fopen(polyline_file, "w");
+    if (!polyline_fp)
+      error->one(FLERR, msg(std::string("cannot open polyline file ") + polyline_file).c_str());
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixMembrane2d::~FixMembrane2d()
+{
+  for (Input *in : {&pressure_in, &ylo_in, &yhi_in}) delete[] in->varname;
+  delete[] polyline_file;
+  if (polyline_fp) fclose(polyline_fp);
+  memory->destroy(vector_atom);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixMembrane2d::setmask()
+{
+  return PRE_FORCE | POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::parse_input(Input &in, const char *arg, const char *name)
+{
+  if (strncmp(arg, "v_", 2) == 0) {
+    in.varname = new char[strlen(arg + 2) + 1];
+    strcpy(in.varname, arg + 2);
+    return;
+  }
+  char *end = nullptr;
+  in.value = strtod(arg, &end);
+  if (*end != '\0' || !std::isfinite(in.value))
+    error->all(FLERR, msg(std::string(name) + " must be a number or v_name, got '" + arg + "'").c_str());
+}
+
+void FixMembrane2d::init_input(Input &in, const char *name)
+{
+  if (!in.varname) return;
+  in.ivar = input->variable->find(in.varname);
+  if (in.ivar < 0)
+    error->all(FLERR, msg(std::string("variable '") + in.varname + "' for " + name + " does not exist").c_str());
+  if (!input->variable->equalstyle(in.ivar))
+    error->all(FLERR, msg(std::string("variable '") + in.varname + "' for " + name + " must be equal-style").c_str());
+}
+
+double FixMembrane2d::evaluate(const Input &in)
+{
+  if (!in.varname) return in.value;
+  modify->clearstep_compute();
+  const double v = input->variable->compute_equal(in.ivar);
+  modify->addstep_compute(update->ntimestep + 1);
+  return v;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::init()
+{
+  init_input(pressure_in, "pressure");
+  init_input(ylo_in, "ylo");
+  init_input(yhi_in, "yhi");
+
+  if (membrane_type > 0) {
+    // the chain is frictionless because its disks take a type whose friction is zero
+    const int ntypes = atom->ntypes;
+    FixPropertyGlobal *mu = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+        "coefficientFriction", "property/global", "peratomtypepair", ntypes, ntypes, style));
+    for (int j = 1; j <= ntypes; j++) {
+      const double value = mu->compute_array(membrane_type - 1, j - 1);
+      if (value != 0.0)
+        error->all(FLERR, msg("coefficientFriction of the frictionless type " + std::to_string(membrane_type) +
+                              " with type " + std::to_string(j) + " is " + std::to_string(value) +
+                              ", it must be 0").c_str());
+    }
+  } else if (comm->me == 0) {
+    error->warning(FLERR, msg("no 'frictionless' type given: chain disks keep their friction").c_str());
+  }
+
+  compute_d50();
+  if (band_width <= 0.0) band_width = 10.0 * d50;
+  if (tolerance < 0.0) tolerance = 0.02 * d50;
+  force_detection = true;
+}
+
+/* ----------------------------------------------------------------------
+   D50 of the group (by area, i.e. by mass for disks of one density), for
+   the default band width and gap tolerance
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::compute_d50()
+{
+  sendbuf.clear();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) sendbuf.push_back(2.0 * atom->radius[i]);
+  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
+  if (recvbuf.empty()) error->all(FLERR, msg("the fix group has no atoms").c_str());
+  d50 = membrane::d50_by_area(recvbuf);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::evaluate_platens()
+{
+  ylo = evaluate(ylo_in);
+  yhi = evaluate(yhi_in);
+  if (!std::isfinite(ylo) || !std::isfinite(yhi) || !(ylo < yhi))
+    error->all(FLERR, msg("the bottom platen (ylo = " + std::to_string(ylo) +
+                          ") must be below the top platen (yhi = " + std::to_string(yhi) + ")").c_str());
+}
+
+void FixMembrane2d::check_platens()
+{
+  double lo = 1e300, hi = -1e300;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    lo = std::min(lo, atom->x[i][1]);
+    hi = std::max(hi, atom->x[i][1]);
+  }
+  double glo, ghi;
+  MPI_Allreduce(&lo, &glo, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&hi, &ghi, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (glo < ylo)
+    error->all(FLERR, msg("a particle centre (y = " + std::to_string(glo) +
+                          ") is below the bottom platen ylo = " + std::to_string(ylo)).c_str());
+  if (ghi > yhi)
+    error->all(FLERR, msg("a particle centre (y = " + std::to_string(ghi) +
+                          ") is above the top platen yhi = " + std::to_string(yhi)).c_str());
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::setup_pre_force(int vflag)
+{
+  evaluate_platens();
+  check_platens();
+  force_detection = true;
+  pre_force(vflag);
+}
+
+void FixMembrane2d::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   chain detection happens before the pair forces, so that a disk joining
+   the chain is frictionless in this very step
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::pre_force(int)
+{
+  if (!force_detection && update->ntimestep % detect_every != 0) return;
+  evaluate_platens();
+  detect_chains();
+  force_detection = false;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::gather_band(SideState &s)
+{
+  membrane::BandSlices slices;
+  slices.reset(s.side, membrane::Platens{ylo, yhi}, band_width);
+  double **x = atom->x;
+  double *radius = atom->radius;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++)
+    if (atom->mask[i] & groupbit) slices.add(x[i][0], x[i][1], radius[i]);
+  std::vector<double> &extent = slices.extents();
+  MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
+                s.side == Side::Right ? MPI_MAX : MPI_MIN, world);
+
+  sendbuf.clear();
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    if (!slices.contains(x[i][0], x[i][1], radius[i], band_width)) continue;
+    const double rec[BAND_FIELDS] = {static_cast<double>(atom->tag[i]), x[i][0], x[i][1],
+                                     radius[i], static_cast<double>(atom->type[i])};
+    sendbuf.insert(sendbuf.end(), rec, rec + BAND_FIELDS);
+  }
+  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
+
+  const size_t n = recvbuf.size() / BAND_FIELDS;
+  s.band.resize(n);
+  band_type.resize(n);
+  std::vector<size_t> order(n);
+  for (size_t k = 0; k < n; k++) order[k] = k;
+  const double *buf = recvbuf.data();
+  std::sort(order.begin(), order.end(), [buf](size_t p, size_t q) {
+    return buf[p * BAND_FIELDS + B_TAG] < buf[q * BAND_FIELDS + B_TAG];
+  });
+  for (size_t k = 0; k < n; k++) {
+    const double *rec = buf + order[k] * BAND_FIELDS;
+    s.band[k] = Disk{static_cast<long>(rec[B_TAG]), rec[B_X], rec[B_Y], rec[B_R]};
+    band_type[k] = static_cast<int>(rec[B_TYPE]);
+  }
+  if (n == 0)
+    error->all(FLERR, msg(std::string("no atoms in the ") + side_name(s.side == Side::Left ? LEFT : RIGHT) +
+                          " band").c_str());
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::detect_chains()
+{
+  redetections++;
+  for (int k = LEFT; k <= RIGHT; k++) {
+    SideState &s = sides[k];
+    if (!s.active) continue;
+    gather_band(s);
+    // the type a disk had before it joined the chain, as seen by every rank
+    for (size_t b = 0; b < s.band.size(); b++)
+      if (membrane_type > 0 && band_type[b] != membrane_type)
+        observed_type[s.band[b].tag] = band_type[b];
+
+    finder.find(s.band, s.side, membrane::Platens{ylo, yhi}, tolerance, result);
+    if (!result.ok) {
+      failures++;
+      if (s.chain_tags.empty())
+        error->all(FLERR, msg(std::string("no chain of touching particles from the bottom to the top platen on the ") +
+                              side_name(k) + " side at step " + std::to_string(update->ntimestep) + ": " +
+                              result.failure + "; check ylo/yhi, the band width and the tolerance").c_str());
+      if (!s.warned && comm->me == 0) {
+        error->warning(FLERR, msg(std::string("chain lost on the ") + side_name(k) + " side at step " +
+                                  std::to_string(update->ntimestep) + " (" + result.failure +
+                                  "): keeping the previous chain; counted in f_ID[12], warned once").c_str());
+      }
+      s.warned = true;
+      continue;
+    }
+    const std::vector<long> old_tags = s.chain_tags;
+    s.chain_tags.clear();
+    for (int idx : result.chain) s.chain_tags.push_back(s.band[idx].tag);
+    s.escaped_tags.clear();
+    s.escaped_radius.clear();
+    for (int idx : result.escaped) {
+      s.escaped_tags.push_back(s.band[idx].tag);
+      s.escaped_radius.push_back(s.band[idx].r);
+    }
+    if (membrane_type > 0) switch_types(old_tags, s.chain_tags);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   Disks that leave the chain get their own type (and friction) back, disks
+   that join take the frictionless type. Ghost copies are switched too: a
+   ghost's type is otherwise refreshed only when the neighbour list is rebuilt.
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags)
+{
+  std::unordered_map<long, int> change;
+  std::vector<long> a = old_tags, b = new_tags;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  // leaving: in a, not in b
+  for (long tag : a)
+    if (!std::binary_search(b.begin(), b.end(), tag)) {
+      auto it = observed_type.find(tag);
+      if (it != observed_type.end()) change[tag] = it->second;
+    }
+  for (long tag : b)
+    if (!std::binary_search(a.begin(), a.end(), tag)) change[tag] = membrane_type;
+  if (change.empty()) return;
+
+  int *type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
+    auto it = change.find(atom->tag[i]);
+    if (it != change.end()) type[i] = it->second;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   positions of the chain disks now, in chain order (every step, so forces
+   follow the disks between detections)
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::gather_chain_positions(SideState &s)
+{
+  sendbuf.clear();
+  for (long tag : s.chain_tags) {
+    const int i = atom->map(static_cast<int>(tag));
+    if (i < 0 || i >= atom->nlocal) continue;
+    const double rec[4] = {static_cast<double>(tag), atom->x[i][0], atom->x[i][1], atom->radius[i]};
+    sendbuf.insert(sendbuf.end(), rec, rec + 4);
+  }
+  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
+
+  const size_t n = s.chain_tags.size();
+  if (recvbuf.size() != 4 * n)
+    error->all(FLERR, msg("a chain particle was lost (deleted or out of the box)").c_str());
+  std::unordered_map<long, size_t> position;
+  for (size_t k = 0; k < n; k++) position[s.chain_tags[k]] = k;
+  s.chain_disks.resize(n);
+  for (size_t k = 0; k < n; k++) {
+    const double *rec = recvbuf.data() + 4 * k;
+    const long tag = static_cast<long>(rec[0]);
+    s.chain_disks[position[tag]] = Disk{tag, rec[1], rec[2], rec[3]};
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::post_force(int)
+{
+  pressure = evaluate(pressure_in);
+  if (!(pressure >= 0.0) || !std::isfinite(pressure))
+    error->all(FLERR, msg("pressure must be a finite number >= 0, got " + std::to_string(pressure) +
+                          " at step " + std::to_string(update->ntimestep)).c_str());
+  evaluate_platens();
+
+  for (SideState &s : sides) {
+    if (!s.active) continue;
+    gather_chain_positions(s);
+    chain_index.resize(s.chain_disks.size());
+    for (size_t k = 0; k < chain_index.size(); k++) chain_index[k] = static_cast<int>(k);
+    membrane::polyline_from_chain(s.chain_disks, chain_index, membrane::Platens{ylo, yhi}, s.polyline);
+    membrane::chain_forces(s.polyline, s.side, pressure, thickness, s.forces);
+    s.total.setZero();
+    for (const Eigen::Vector2d &f : s.forces) s.total += f;
+  }
+  apply_forces();
+  update_flags();
+  update_outputs();
+  if (polyline_fp && update->ntimestep % polyline_every == 0) write_polylines();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::apply_forces()
+{
+  double **f = atom->f;
+  const int nlocal = atom->nlocal;
+  for (SideState &s : sides) {
+    if (!s.active) continue;
+    for (size_t k = 0; k < s.chain_disks.size(); k++) {
+      const int i = atom->map(static_cast<int>(s.chain_disks[k].tag));
+      if (i < 0 || i >= nlocal) continue;
+      f[i][0] += s.forces[k].x();
+      f[i][1] += s.forces[k].y();
+    }
+    for (size_t k = 0; k < s.escaped_tags.size(); k++) {
+      const int i = atom->map(static_cast<int>(s.escaped_tags[k]));
+      if (i < 0 || i >= nlocal) continue;
+      const Disk d{s.escaped_tags[k], atom->x[i][0], atom->x[i][1], atom->radius[i]};
+      const Eigen::Vector2d push = membrane::escapee_force(d, s.side, pressure, thickness);
+      f[i][0] += push.x();
+      f[i][1] += push.y();
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::update_flags()
+{
+  if (atom->nmax > nmax_flag) {
+    memory->destroy(vector_atom);
+    nmax_flag = atom->nmax;
+    memory->create(vector_atom, nmax_flag, "membrane2d:flag");
+  }
+  const int nlocal = atom->nlocal;
+  std::fill(vector_atom, vector_atom + nlocal, 0.0);
+  auto mark = [&](long tag, double flag) {
+    const int i = atom->map(static_cast<int>(tag));
+    if (i >= 0 && i < nlocal) vector_atom[i] = flag;
+  };
+  for (int k = LEFT; k <= RIGHT; k++) {
+    if (!sides[k].active) continue;
+    for (long tag : sides[k].chain_tags) mark(tag, k == LEFT ? LEFT_CHAIN : RIGHT_CHAIN);
+    for (long tag : sides[k].escaped_tags) mark(tag, ESCAPEE);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::update_outputs()
+{
+  double *v = vector_values;
+  std::fill(v, v + VECTOR_SIZE, 0.0);
+  const SideState &l = sides[LEFT], &r = sides[RIGHT];
+  if (l.active && r.active) {
+    v[AREA] = membrane::sample_area(l.polyline, r.polyline);
+    v[MEAN_WIDTH] = v[AREA] / (yhi - ylo);
+    v[MID_WIDTH] = membrane::width_at(0.5 * (ylo + yhi), l.polyline, r.polyline);
+  }
+  v[CHAIN_LEFT] = static_cast<double>(l.chain_tags.size());
+  v[CHAIN_RIGHT] = static_cast<double>(r.chain_tags.size());
+  v[ESCAPED] = static_cast<double>(l.escaped_tags.size() + r.escaped_tags.size());
+  v[FX_LEFT] = l.total.x();
+  v[FY_LEFT] = l.total.y();
+  v[FX_RIGHT] = r.total.x();
+  v[FY_RIGHT] = r.total.y();
+  v[REDETECTIONS] = static_cast<double>(redetections);
+  v[FAILURES] = static_cast<double>(failures);
+  v[PRESSURE] = pressure;
+}
+
+double FixMembrane2d::compute_vector(int n)
+{
+  return vector_values[n];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane2d::write_polylines()
+{
+  fprintf(polyline_fp, "ITEM: TIMESTEP\n" BIGINT_FORMAT "\n", update->ntimestep);
+  for (int k = LEFT; k <= RIGHT; k++) {
+    const SideState &s = sides[k];
+    if (!s.active) continue;
+    fprintf(polyline_fp, "ITEM: POLYLINE %s %zu\n", side_name(k), s.polyline.size());
+    for (const Eigen::Vector2d &p : s.polyline) fprintf(polyline_fp, "%.10g %.10g\n", p.x(), p.y());
+    fprintf(polyline_fp, "ITEM: CHAIN %s %zu (tag x y r fx fy)\n", side_name(k), s.chain_disks.size());
+    for (size_t c = 0; c < s.chain_disks.size(); c++) {
+      const Disk &d = s.chain_disks[c];
+      fprintf(polyline_fp, "%ld %.10g %.10g %.10g %.10g %.10g\n", d.tag, d.x, d.y, d.r,
+              s.forces[c].x(), s.forces[c].y());
+    }
+  }
+  fflush(polyline_fp);
+}
+
+/* ----------------------------------------------------------------------
+   restart: the chains, the escapees and the types the chain disks had
+   before they joined (atoms in the restart file carry the frictionless type)
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::write_restart(FILE *fp)
+{
+  std::vector<double> buf;
+  for (const SideState &s : sides) {
+    buf.push_back(static_cast<double>(s.chain_tags.size()));
+    for (long t : s.chain_tags) buf.push_back(static_cast<double>(t));
+    buf.push_back(static_cast<double>(s.escaped_tags.size()));
+    for (size_t k = 0; k < s.escaped_tags.size(); k++) {
+      buf.push_back(static_cast<double>(s.escaped_tags[k]));
+      buf.push_back(s.escaped_radius[k]);
+    }
+  }
+  buf.push_back(static_cast<double>(observed_type.size()));
+  for (const auto &entry : observed_type) {
+    buf.push_back(static_cast<double>(entry.first));
+    buf.push_back(static_cast<double>(entry.second));
+  }
+  buf.push_back(static_cast<double>(redetections));
+  buf.push_back(static_cast<double>(failures));
+  if (comm->me == 0) {
+    int size = static_cast<int>(buf.size() * sizeof(double));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(buf.data(), sizeof(double), buf.size(), fp);
+  }
+}
+
+void FixMembrane2d::restart(char *raw)
+{
+  const double *buf = reinterpret_cast<const double *>(raw);
+  size_t m = 0;
+  for (SideState &s : sides) {
+    const size_t nchain = static_cast<size_t>(buf[m++]);
+    s.chain_tags.resize(nchain);
+    for (size_t k = 0; k < nchain; k++) s.chain_tags[k] = static_cast<long>(buf[m++]);
+    const size_t nesc = static_cast<size_t>(buf[m++]);
+    s.escaped_tags.resize(nesc);
+    s.escaped_radius.resize(nesc);
+    for (size_t k = 0; k < nesc; k++) {
+      s.escaped_tags[k] = static_cast<long>(buf[m++]);
+      s.escaped_radius[k] = buf[m++];
+    }
+  }
+  const size_t ntypes = static_cast<size_t>(buf[m++]);
+  observed_type.clear();
+  for (size_t k = 0; k < ntypes; k++) {
+    const long tag = static_cast<long>(buf[m++]);
+    observed_type[tag] = static_cast<int>(buf[m++]);
+  }
+  redetections = static_cast<bigint>(buf[m++]);
+  failures = static_cast<bigint>(buf[m++]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixMembrane2d::memory_usage()
+{
+  double bytes = nmax_flag * sizeof(double);
+  bytes += (sendbuf.capacity() + recvbuf.capacity()) * sizeof(double);
+  for (const SideState &s : sides)
+    bytes += s.band.capacity() * sizeof(Disk) + s.chain_disks.capacity() * sizeof(Disk);
+  bytes += observed_type.size() * (sizeof(long) + sizeof(int) + 32);
+  return bytes;
+}

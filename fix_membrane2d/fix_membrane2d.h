@@ -1,0 +1,120 @@
+/* ----------------------------------------------------------------------
+   fix membrane2d: a deformable latex membrane on the left and right of a
+   2D biaxial sample (Cheung & O'Sullivan 2008; Momeni et al. 2024).
+   The chain of outermost disks on each side carries the confining
+   pressure as one force per disk. See doc/fix_membrane2d.md. Geometry in
+   membrane_chain.h (no LIGGGHTS); this class gathers the side bands,
+   calls it and applies the forces to owned atoms.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(membrane2d,FixMembrane2d)
+
+#else
+
+#ifndef LMP_FIX_MEMBRANE2D_H
+#define LMP_FIX_MEMBRANE2D_H
+
+#include <cstdio>
+#include <map>
+#include <vector>
+
+#include "fix.h"
+#include "membrane_chain.h"
+
+namespace LAMMPS_NS {
+
+class FixMembrane2d : public Fix {
+ public:
+  FixMembrane2d(class LAMMPS *, int, char **);
+  ~FixMembrane2d();
+  int setmask();
+  void init();
+  void setup_pre_force(int);
+  void setup(int);
+  void pre_force(int);
+  void post_force(int);
+  double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
+  double memory_usage();
+
+  // global vector layout (1-based in input scripts: f_ID[k])
+  enum VectorIndex {
+    AREA = 0, MEAN_WIDTH, MID_WIDTH, CHAIN_LEFT, CHAIN_RIGHT, ESCAPED,
+    FX_LEFT, FY_LEFT, FX_RIGHT, FY_RIGHT, REDETECTIONS, FAILURES, PRESSURE,
+    VECTOR_SIZE
+  };
+  enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };
+
+ private:
+  // A value given as a number or as an equal-style variable v_name.
+  struct Input {
+    double value = 0.0;
+    char *varname = nullptr;
+    int ivar = -1;
+  };
+
+  struct SideState {
+    membrane::Side side;
+    bool active = false;
+    std::vector<long> chain_tags;        // bottom -> top, kept between detections
+    std::vector<long> escaped_tags;
+    std::vector<double> escaped_radius;
+    std::vector<membrane::Disk> band;    // gathered at the last detection, by tag
+    std::vector<membrane::Disk> chain_disks;  // current positions, chain order
+    membrane::Polyline polyline;
+    std::vector<Eigen::Vector2d> forces;
+    Eigen::Vector2d total{0.0, 0.0};
+    bool warned = false;
+  };
+
+  Input pressure_in, ylo_in, yhi_in;
+  double thickness;
+  double band_width;       // <= 0: 10 x D50 of the group, set in init()
+  double tolerance;        // < 0: 0.02 x D50
+  double d50;
+  int detect_every;
+  int membrane_type;       // 0: chain disks keep their friction
+  bigint polyline_every;
+  char *polyline_file;
+  FILE *polyline_fp;
+
+  SideState sides[2];      // LEFT, RIGHT
+  membrane::ChainFinder finder;
+  membrane::ChainResult result;
+  std::map<long, int> observed_type;   // band tag -> its own (not frictionless) type
+  std::vector<int> band_type;          // type of each gathered band disk
+  std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
+
+  double pressure, ylo, yhi;
+  bool force_detection;
+  double vector_values[VECTOR_SIZE];
+  bigint redetections, failures;
+
+  int nmax_flag;
+  std::vector<double> sendbuf, recvbuf;
+  std::vector<int> recvcounts, displs;
+
+  void parse_input(Input &in, const char *arg, const char *name);
+  void init_input(Input &in, const char *name);
+  double evaluate(const Input &in);
+  void evaluate_platens();
+  void check_platens();
+  void compute_d50();
+  void allgather(int nper);
+  void gather_band(SideState &s);
+  void detect_chains();
+  void switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags);
+  void gather_chain_positions(SideState &s);
+  void apply_forces();
+  void update_flags();
+  void update_outputs();
+  void write_polylines();
+};
+
+}
+
+#endif
+#endif

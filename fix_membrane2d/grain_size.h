@@ -1,0 +1,13 @@
+#pragma once
+// Grain-size statistics used for the membrane's default band width and gap
+// tolerance (no LIGGGHTS).
+
+#include <vector>
+
+namespace membrane {
+
+// D50 by mass of disks of one density: the diameter below which half of the
+// total disk area lies. Empty input -> 0.
+double d50_by_area(std::vector<double> diameters);
+
+}  // namespace membrane
