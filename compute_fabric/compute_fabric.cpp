@@ -48,7 +48,7 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
   rattlers_flag(false), histogram_flag(false), stress_flag(false),
   area_value(0.0), area_varname(nullptr), area_ivar(-1),
   idregion(nullptr), iregion(-1),
-  id_contacts(nullptr), own_contacts(false), contacts(nullptr),
+  id_contacts(nullptr), contacts(nullptr),
   gathered_step(-1), nparticles(0), nmax_atom(0)
 {
   if (domain->dimension != 2)
@@ -100,8 +100,8 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
     if (strcmp(key, "bins") == 0) {
       char *end = nullptr;
       long n = strtol(value, &end, 10);
-      if (*end != '\0' || n < 4 || n > 3600 || n % 2 != 0)
-        error->all(FLERR, "Illegal compute fabric command: 'bins' must be an even integer from 4 to 3600");
+      if (*end != '\0' || n < 6 || n > 3600 || n % 2 != 0)
+        error->all(FLERR, "Illegal compute fabric command: 'bins' must be an even integer from 6 to 3600");
       nbins = static_cast<int>(n);
     } else if (strcmp(key, "estimator") == 0) {
       if (strcmp(value, "unbiased") == 0) estimator = Estimator::Unbiased;
@@ -157,19 +157,41 @@ ComputeFabric::~ComputeFabric()
    Contact forces come from LIGGGHTS' own compute pair/gran/local: the pair
    style evaluates its contact model again at the current positions with the
    stored contact history (not updated), so these are the forces the pair
-   applied this step. A pair style accepts only one such compute: reuse the
-   user's if there is one, else create ours.
+   applied this step. A pair style accepts only one such compute: reuse one
+   the user defined (before or after this compute), else create ours at the
+   first init, when every compute of the input script exists.
 ------------------------------------------------------------------------- */
 
-void ComputeFabric::post_create()
+void ComputeFabric::find_contacts_compute()
 {
-  find_contacts_compute();
-  if (contacts) return;
+  contacts = nullptr;
+  for (int i = 0; i < modify->ncompute; i++) {
+    Compute *c = modify->compute[i];
+    if (c == this || strcmp(c->style, "pair/gran/local") != 0) continue;
+    if (id_contacts && strcmp(c->id, id_contacts) != 0) continue;
+    ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
+    if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
+      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id +
+                         " (pair/gran/local) must include the values 'pos id force' "
+                         "for compute fabric to read it").c_str());
+    if (c->igroup != 0 && c->igroup != igroup)
+      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id +
+                         " (pair/gran/local) must use group all or the group of compute fabric").c_str());
+    contacts = found;
+    if (!id_contacts) {
+      id_contacts = new char[strlen(c->id) + 1];
+      strcpy(id_contacts, c->id);
+    }
+    return;
+  }
+}
 
+void ComputeFabric::create_contacts_compute()
+{
   std::string cid = std::string(id) + "_contacts";
+  delete[] id_contacts;
   id_contacts = new char[cid.size() + 1];
   strcpy(id_contacts, cid.c_str());
-  own_contacts = true;
 
   char *args[6];
   args[0] = id_contacts;
@@ -184,44 +206,13 @@ void ComputeFabric::post_create()
 
 /* ---------------------------------------------------------------------- */
 
-void ComputeFabric::find_contacts_compute()
-{
-  contacts = nullptr;
-  for (int i = 0; i < modify->ncompute; i++) {
-    Compute *c = modify->compute[i];
-    if (c == this || strcmp(c->style, "pair/gran/local") != 0) continue;
-    if (id_contacts && strcmp(c->id, id_contacts) == 0) {
-      contacts = static_cast<ComputePairGranLocal *>(c);
-      continue;
-    }
-    if (contacts && own_contacts)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id +
-                         " (pair/gran/local) is defined after compute fabric; a granular pair style "
-                         "accepts only one: define it before compute fabric, with the values "
-                         "'pos id force', and compute fabric will read it").c_str());
-    if (!contacts) {
-      ComputePairGranLocal *user = static_cast<ComputePairGranLocal *>(c);
-      if (user->offset_x1() < 0 || user->offset_id1() < 0 || user->offset_f() < 0)
-        error->all(FLERR, (std::string("Compute fabric: existing compute ") + c->id +
-                           " (pair/gran/local) must include the values 'pos id force' "
-                           "for compute fabric to read it").c_str());
-      if (c->igroup != 0 && c->igroup != igroup)
-        error->all(FLERR, (std::string("Compute fabric: existing compute ") + c->id +
-                           " (pair/gran/local) must use group all or the group of compute fabric").c_str());
-      contacts = user;
-      id_contacts = new char[strlen(c->id) + 1];
-      strcpy(id_contacts, c->id);
-    }
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
 void ComputeFabric::init()
 {
   find_contacts_compute();
-  if (!contacts)
-    error->all(FLERR, "Compute fabric: its compute pair/gran/local was deleted");
+  if (!contacts && id_contacts)
+    error->all(FLERR, (std::string("Compute fabric: compute ") + id_contacts +
+                       " (pair/gran/local) that it reads was deleted").c_str());
+  if (!contacts) create_contacts_compute();
 
   if (idregion) {
     iregion = domain->find_region(idregion);

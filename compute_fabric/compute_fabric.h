@@ -26,7 +26,6 @@ class ComputeFabric : public Compute {
  public:
   ComputeFabric(class LAMMPS *, int &iarg, int, char **);
   ~ComputeFabric();
-  void post_create();
   void init();
   void compute_vector();
   void compute_array();
@@ -55,7 +54,6 @@ class ComputeFabric : public Compute {
   int iregion;
 
   char *id_contacts;       // compute pair/gran/local that reports contact forces
-  bool own_contacts;       // true if this compute created it
   class ComputePairGranLocal *contacts;
 
   bigint gathered_step;    // timestep of the contact list below
@@ -68,6 +66,7 @@ class ComputeFabric : public Compute {
 
   void parse_args(int iarg, int narg, char **arg);
   void find_contacts_compute();
+  void create_contacts_compute();
   void gather_contacts();
   bool atom_selected(int i) const;
   double sample_area();

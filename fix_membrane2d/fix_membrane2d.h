@@ -39,6 +39,10 @@ class FixMembrane2d : public Fix {
   void write_restart(FILE *);
   void restart(char *);
   double memory_usage();
+  // LIGGGHTS sizes its per-type-pair contact tables by the types atoms and fixes
+  // report: the frictionless type may not be on any atom before the first run.
+  int min_type() { return membrane_type; }
+  int max_type() { return membrane_type; }
 
   // global vector layout (1-based in input scripts: f_ID[k])
   enum VectorIndex {

@@ -7,7 +7,8 @@ The script states its own expectations in comment lines starting with '#@':
   #@ expect NAME VALUE rel TOL      ... within TOL relative
   #@ expect NAME > VALUE           ... (also <) a bound
   #@ error SUBSTRING ::: COMMAND    replace the line '#@ case' by COMMAND: the run must
-                                   fail with SUBSTRING in its output (one line per case)
+                                   fail with SUBSTRING in its output (one line per case;
+                                   a literal \n in COMMAND starts a new input line)
   #@ ranks 1 2 4                   --compare: all RESULT values equal on these rank counts
   #@ tolerance RTOL ATOL           ... within this relative/absolute tolerance
 
@@ -32,9 +33,10 @@ def directives(path):
     return out
 
 
-def run(exe, np_, script, workdir, timeout):
-    cmd = [exe, "-in", script, "-log", "none", "-echo", "none",
-           "-var", "testdir", os.path.dirname(os.path.abspath(script))]
+def run(exe, np_, script, workdir, timeout, testdir=None):
+    """Run one script; 'testdir' (the original script's folder) is passed as ${testdir}."""
+    testdir = testdir or os.path.dirname(os.path.abspath(script))
+    cmd = [exe, "-in", script, "-log", "none", "-echo", "none", "-var", "testdir", testdir]
     if np_ > 1:
         cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
     try:
@@ -104,8 +106,8 @@ def main():
                 expect, command = expect.strip(), command.strip()
                 case = os.path.join(work, "case%d.in" % i)
                 with open(case, "w") as f:
-                    f.write(text.replace("#@ case\n", command + "\n"))
-                rc, out = run(a.exe, a.np, case, work, a.timeout)
+                    f.write(text.replace("#@ case\n", command.replace("\\n", "\n") + "\n"))
+                rc, out = run(a.exe, a.np, case, work, a.timeout, os.path.dirname(script))
                 ok = rc != 0 and expect in out and "TIMEOUT" not in out
                 print("%s error case '%s' -> '%s'" % ("ok  " if ok else "FAIL", command, expect))
                 if not ok:

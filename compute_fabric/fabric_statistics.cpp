@@ -1,0 +1,251 @@
+#include "fabric_statistics.h"
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace fabric {
+namespace {
+
+constexpr double kPi = 3.141592653589793238462643383280;
+constexpr double kTwoPi = 2.0 * kPi;
+
+// ---- angles -----------------------------------------------------------------
+
+double direction_angle(double x, double y) {
+  double angle = std::atan2(y, x);
+  if (angle < 0.0) angle += kTwoPi;
+  if (angle >= kTwoPi) angle = 0.0;  // -tiny + 2pi can round up to 2pi
+  return angle;
+}
+
+double bin_width(int nbins) { return kTwoPi / nbins; }
+
+double bin_centre(int bin, double width) { return (bin + 0.5) * width; }
+
+int bin_of(double angle, int nbins) {
+  const int bin = static_cast<int>(angle / bin_width(nbins));
+  return bin < nbins ? bin : nbins - 1;  // guards angle / width rounding up to nbins
+}
+
+// Orientation of a pi-periodic quantity from its second harmonic
+// (c, s) = amplitude * (cos 2theta, sin 2theta).
+Anisotropy from_second_harmonic(double c, double s) {
+  double theta = 0.5 * std::atan2(s, c);
+  if (theta <= -0.5 * kPi) theta += kPi;  // atan2(-0.0, c < 0) = -pi
+  return {std::hypot(c, s), theta};
+}
+
+// For a symmetric 2x2 tensor, eigenvalue gap and major-axis direction in closed form.
+Anisotropy deviator_of(const Eigen::Matrix2d& m) {
+  return from_second_harmonic(m(0, 0) - m(1, 1), 2.0 * m(0, 1));
+}
+
+// ---- histogram checks -------------------------------------------------------
+
+void require_usable_bin_count(int nbins) {
+  if (nbins < 3 || nbins == 4)
+    throw std::invalid_argument("fabric: nbins must be >= 3 and != 4, got " +
+                                std::to_string(nbins));
+}
+
+void require_well_formed(const Histogram& h) {
+  require_usable_bin_count(h.nbins);
+  const auto n = static_cast<std::size_t>(h.nbins);
+  if (h.count.size() != n || h.mean_fn.size() != n || h.mean_ft.size() != n)
+    throw std::invalid_argument("fabric: histogram vectors must have nbins entries");
+}
+
+bool is_empty_bin(const Histogram& h, int bin) {
+  return !(h.count[static_cast<std::size_t>(bin)] > 0.0);
+}
+
+// Corrects for averaging cos 2theta over a bin instead of reading it at the centre.
+double bin_correction(double width, BinCorrection correction) {
+  const double ratio = width / std::sin(width);
+  return correction == BinCorrection::Unbiased ? ratio : 1.0 / ratio;
+}
+
+// ---- force statistics -------------------------------------------------------
+
+struct BinnedForceSums {
+  double f0_numerator = 0.0;   // sum' fn(g) dth
+  double covered_angle = 0.0;  // n' dth
+  double fn_cos = 0.0, fn_sin = 0.0;  // sum' fn(g) {cos,sin} 2theta_g dth
+  double ft_cos = 0.0, ft_sin = 0.0;  // sum' ft(g) {cos,sin} 2theta_g dth
+};
+
+BinnedForceSums sum_non_empty_bins(const Histogram& h) {
+  const double width = bin_width(h.nbins);
+  BinnedForceSums sums;
+  for (int g = 0; g < h.nbins; ++g) {
+    if (is_empty_bin(h, g)) continue;
+    const auto i = static_cast<std::size_t>(g);
+    const double twice_centre = 2.0 * bin_centre(g, width);
+    sums.f0_numerator += h.mean_fn[i] * width;
+    sums.covered_angle += width;
+    sums.fn_cos += h.mean_fn[i] * std::cos(twice_centre) * width;
+    sums.fn_sin += h.mean_fn[i] * std::sin(twice_centre) * width;
+    sums.ft_cos += h.mean_ft[i] * std::cos(twice_centre) * width;
+    sums.ft_sin += h.mean_ft[i] * std::sin(twice_centre) * width;
+  }
+  return sums;
+}
+
+// Fabric density relative to isotropy, 1 + a cos 2(theta - theta_a).
+double relative_fabric_density(const Contact& c, const Anisotropy& fabric) {
+  const double twice_angle = 2.0 * std::atan2(c.ny, c.nx);
+  return 1.0 + fabric.a * std::cos(twice_angle - 2.0 * fabric.theta);
+}
+
+// n (x) t with t = (-ny, nx); only its symmetric part carries the a_t rose.
+Eigen::Matrix2d symmetric_normal_tangent(const Contact& c) {
+  Eigen::Matrix2d m;
+  m(0, 0) = -c.nx * c.ny;
+  m(1, 1) = c.nx * c.ny;
+  m(0, 1) = m(1, 0) = 0.5 * (c.nx * c.nx - c.ny * c.ny);
+  return m;
+}
+
+Eigen::Matrix2d normal_dyad(const Contact& c) {
+  Eigen::Matrix2d m;
+  m << c.nx * c.nx, c.nx * c.ny, c.nx * c.ny, c.ny * c.ny;
+  return m;
+}
+
+void add_to_bin(Histogram& h, int bin, const Contact& c) {
+  const auto i = static_cast<std::size_t>(bin);
+  h.count[i] += 1.0;
+  h.mean_fn[i] += c.fn;  // sums for now; turned into means once all are in
+  h.mean_ft[i] += c.ft;
+}
+
+}  // namespace
+
+Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins) {
+  require_usable_bin_count(nbins);
+  const auto n = static_cast<std::size_t>(nbins);
+  Histogram h{nbins, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0),
+              std::vector<double>(n, 0.0), 0};
+
+  for (const Contact& c : contacts) {
+    add_to_bin(h, bin_of(direction_angle(c.nx, c.ny), nbins), c);
+    add_to_bin(h, bin_of(direction_angle(-c.nx, -c.ny), nbins), c);  // same fn, ft
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (h.count[i] > 0.0) {
+      h.mean_fn[i] /= h.count[i];
+      h.mean_ft[i] /= h.count[i];
+    } else {
+      ++h.empty_bins;
+    }
+  }
+  return h;
+}
+
+Anisotropy normal_anisotropy_histogram(const Histogram& h, BinCorrection correction) {
+  require_well_formed(h);
+  const double width = bin_width(h.nbins);
+  double total = 0.0, cos_sum = 0.0, sin_sum = 0.0;
+  for (int g = 0; g < h.nbins; ++g) {
+    const double count = h.count[static_cast<std::size_t>(g)];
+    const double twice_centre = 2.0 * bin_centre(g, width);
+    total += count;
+    cos_sum += count * std::cos(twice_centre);
+    sin_sum += count * std::sin(twice_centre);
+  }
+  if (!(total > 0.0)) return {0.0, 0.0};
+  const double prefactor = 2.0 / total * bin_correction(width, correction);
+  return from_second_harmonic(prefactor * cos_sum, prefactor * sin_sum);
+}
+
+Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts) {
+  if (contacts.empty()) return {0.0, 0.0};
+  Eigen::Matrix2d phi = Eigen::Matrix2d::Zero();
+  for (const Contact& c : contacts) phi += normal_dyad(c);
+  phi /= static_cast<double>(contacts.size());
+  const Anisotropy gap = deviator_of(phi);
+  return {2.0 * gap.a, gap.theta};
+}
+
+ForceAnisotropy force_anisotropy_histogram(const Histogram& h, BinCorrection correction) {
+  require_well_formed(h);
+  const BinnedForceSums sums = sum_non_empty_bins(h);
+  ForceAnisotropy result{0.0, 0.0, 0.0, 0.0, 0.0, h.empty_bins};
+  if (!(sums.covered_angle > 0.0)) return result;
+  const double f0 = sums.f0_numerator / sums.covered_angle;
+  if (!(f0 > 0.0)) return result;
+
+  const double scale = bin_correction(bin_width(h.nbins), correction) / (kPi * f0);
+  const Anisotropy normal = from_second_harmonic(scale * sums.fn_cos, scale * sums.fn_sin);
+  const Anisotropy tangential =
+      from_second_harmonic(-scale * sums.ft_sin, scale * sums.ft_cos);
+  result.an = normal.a;
+  result.theta_n = normal.theta;
+  result.f0 = f0;
+  result.at = tangential.a;
+  result.theta_t = tangential.theta;
+  return result;
+}
+
+ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
+                                        const Anisotropy& fabric) {
+  ForceAnisotropy result{0.0, 0.0, 0.0, 0.0, 0.0, 0};
+  if (contacts.empty()) return result;
+  Eigen::Matrix2d chi_n = Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d chi_t = Eigen::Matrix2d::Zero();
+  for (const Contact& c : contacts) {
+    const double density = relative_fabric_density(c, fabric);
+    if (!(density > 0.0)) continue;
+    chi_n += (c.fn / density) * normal_dyad(c);
+    chi_t += (c.ft / density) * symmetric_normal_tangent(c);
+  }
+  const double n = static_cast<double>(contacts.size());
+  chi_n /= n;
+  chi_t /= n;
+
+  const double f0 = chi_n.trace();
+  if (!(f0 > 0.0)) return result;
+  const Anisotropy normal = deviator_of(chi_n);
+  const Anisotropy tangential = deviator_of(chi_t);
+  result.an = 2.0 * normal.a / f0;
+  result.theta_n = normal.theta;
+  result.f0 = f0;
+  result.at = 2.0 * tangential.a / f0;
+  result.theta_t = tangential.theta;
+  return result;
+}
+
+Coordination coordination(const std::vector<int>& contacts_per_particle) {
+  Coordination result{0.0, 0.0, 0, 0, 0, 0};
+  for (int count : contacts_per_particle) {
+    if (count < 0) throw std::invalid_argument("fabric: negative contact count");
+    result.n_contacts += count;
+    if (count == 0) ++result.n0;
+    if (count == 1) ++result.n1;
+  }
+  result.n_particles = static_cast<long>(contacts_per_particle.size());
+  if (result.n_particles == 0) return result;
+
+  result.Cn = static_cast<double>(result.n_contacts) / static_cast<double>(result.n_particles);
+  const long mechanical_particles = result.n_particles - result.n0 - result.n1;
+  if (mechanical_particles > 0)
+    result.Zm = static_cast<double>(result.n_contacts - result.n1) /
+                static_cast<double>(mechanical_particles);
+  return result;
+}
+
+Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double area) {
+  if (!(area > 0.0)) throw std::invalid_argument("fabric: Love-Weber area must be > 0");
+  Eigen::Matrix2d sigma = Eigen::Matrix2d::Zero();
+  for (const Contact& c : contacts) {
+    const Eigen::Vector2d normal(c.nx, c.ny);
+    const Eigen::Vector2d tangent(-c.ny, c.nx);
+    const Eigen::Vector2d force = c.fn * normal + c.ft * tangent;
+    sigma += force * Eigen::Vector2d(c.lx, c.ly).transpose();
+  }
+  return sigma / area;
+}
+
+}  // namespace fabric

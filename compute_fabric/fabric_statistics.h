@@ -1,0 +1,123 @@
+// Contact-fabric statistics of a 2D granular sample (spec: shared/spec/fabric.md).
+//
+// Kept free of LIGGGHTS so every formula can be checked against exact cases; the
+// compute style only gathers contacts (once each, across MPI ranks) and calls these.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace fabric {
+
+// One contact, counted once. Angular statistics add the -n copy themselves, so a
+// caller must not list a contact twice (newton off: both ranks see it).
+struct Contact {
+  long a, b;      // particle tags; b = -1 for a wall contact
+  double nx, ny;  // unit normal from a to b (wall: from a's centre towards the wall)
+  double fn;      // normal force, > 0 in compression
+  // Signed force on b along t = (-ny, nx) (n turned by +90 deg). Seen from b the
+  // normal and t both flip and so does the force, so ft is the same from either
+  // side: the -n copy in a histogram carries the same ft.
+  double ft;
+  // Branch vector from a's centre to b's centre. Wall: from a's centre to the
+  // contact point (not twice that), because the wall lies outside the sample and
+  // only a's half of the moment f (x) l counts; then sum f (x) l / A over walls is
+  // exactly the wall traction (tests: LoveWeber.WallContactsGiveTheWallTraction).
+  double lx, ly;
+};
+
+// The paper's prefactor 2 sin(dth)/(N dth) inverts the bin-averaging correction;
+// Unbiased (2 dth/(N sin dth)) recovers a model anisotropy exactly. The published
+// one is low by the factor (sin dth/dth)^2: 0.9600 for 18 bins.
+enum class BinCorrection { Unbiased, Published };
+
+// a >= 0; theta in (-pi/2, pi/2] because the fabric is pi-periodic.
+struct Anisotropy {
+  double a;
+  double theta;
+};
+
+// Built by polar_histogram, or by hand to feed synthetic binned data to the
+// estimators. count is a double so model-exact fractional counts are possible.
+// Bin g covers [g dth, (g+1) dth) from +x, dth = 2 pi / nbins, centre (g+1/2) dth.
+// mean_fn, mean_ft are 0 in empty bins; empty_bins counts bins with count == 0.
+struct Histogram {
+  int nbins;
+  std::vector<double> count;
+  std::vector<double> mean_fn;
+  std::vector<double> mean_ft;
+  int empty_bins;
+};
+
+// Each contact enters twice (n and -n), so the rose is point-symmetric and
+// sum(count) = 2 x contacts. nbins must be >= 3 and != 4: with 1 or 2 bins
+// sin(dth) = 0, and with 4 bins every centre has cos 2theta = 0, so the
+// cos 2theta_a part of the fabric is invisible. Throws std::invalid_argument.
+Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins);
+
+// Rothenburg & Bathurst (1989) from binned counts, N = sum of counts.
+// Empty histogram -> {0, 0}. Throws std::invalid_argument on a malformed histogram.
+Anisotropy normal_anisotropy_histogram(const Histogram& h,
+                                       BinCorrection correction = BinCorrection::Unbiased);
+
+// phi = (1/N) sum n (x) n; a = 2 (phi1 - phi2), theta along the major axis.
+// Binning-free and the exact limit of the histogram estimate. No contacts -> {0, 0}.
+Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts);
+
+// Mean-force rose f_n(th) = f0 [1 + an cos 2(th - theta_n)] and tangential rose
+// f_t(th) = -f0 at sin 2(th - theta_t) (Rothenburg & Bathurst). an, at >= 0.
+// All zero when there are no contacts or f0 <= 0; empty_bins is 0 for the tensor.
+struct ForceAnisotropy {
+  double an;
+  double theta_n;
+  double f0;
+  double at;
+  double theta_t;
+  int empty_bins;
+};
+
+// Bin means are independent of how many contacts a bin holds, so no fabric
+// correction is needed here. Empty bins are left out of the sums and f0 is the
+// mean over the angle the non-empty bins cover (spec section 2):
+//   f0 = sum' f(g) dth / (n' dth)
+//   an cos 2theta_n =  c/(pi f0) sum' fn(g) cos 2theta_g dth   (sin: likewise)
+//   at sin 2theta_t =  c/(pi f0) sum' ft(g) cos 2theta_g dth
+//   at cos 2theta_t = -c/(pi f0) sum' ft(g) sin 2theta_g dth
+// with c = dth/sin dth (Unbiased) or sin dth/dth (Published).
+ForceAnisotropy force_anisotropy_histogram(const Histogram& h,
+                                           BinCorrection correction = BinCorrection::Unbiased);
+
+// Dividing each contact by the fitted fabric density w = 1 + a cos 2(th - theta_a)
+// removes the fabric's own anisotropy from the force tensors:
+//   chi_n = (1/N) sum fn n (x) n / w;       f0 = tr chi_n;  an = 2 (chi_n1 - chi_n2) / f0
+//   chi_t = sym((1/N) sum ft n (x) t / w);  at = 2 (chi_t1 - chi_t2) / f0
+// theta_n, theta_t along the major eigenvectors. For the model roses above this
+// returns (an, theta_n, f0, at, theta_t) exactly. The model density is only valid
+// for a < 1; contacts where w <= 0 are skipped (the model cannot describe them).
+ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
+                                        const Anisotropy& fabric);
+
+// n_contacts is sum(contacts_per_particle), i.e. 2 N_c when only particle-particle
+// contacts are counted; whether a wall contact adds 1 is the caller's choice.
+// n0, n1: particles with 0 and 1 contacts (rattlers), left out of Zm.
+struct Coordination {
+  double Cn;
+  double Zm;
+  long n_contacts;
+  long n_particles;
+  long n0;
+  long n1;
+};
+
+// Cn = sum/Np; Zm = (sum - N1)/(Np - N0 - N1), 0 when no particle has >= 2
+// contacts. Empty input -> all zero. A negative count throws std::invalid_argument.
+Coordination coordination(const std::vector<int>& contacts_per_particle);
+
+// sigma_ij = (1/A) sum f_i l_j with f = fn n + ft t the force on b: compression
+// positive, as in soil mechanics. Not symmetric when tangential forces carry a
+// moment. area is the sample area per unit thickness; area <= 0 throws
+// std::invalid_argument (check it before, e.g. as an error->all in the compute).
+Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double area);
+
+}  // namespace fabric

@@ -1,0 +1,17 @@
+// Geometrical stability index (Momeni et al., Geotechnics 2 (2022) 297-316;
+// spec section 4). Separate from fabric_statistics.h because it is per particle
+// (dumpable per atom) rather than a sample statistic.
+#pragma once
+
+#include <vector>
+
+namespace fabric {
+
+// lambda = D / 2pi, D the smallest total circular misfit between the contacts
+// and n evenly spaced positions anchored at one of them, matched in circular
+// order. 0 for an evenly spaced arrangement; larger means less stable.
+// angles: radians about the particle's centre, any order and any range (taken by
+// value because they are normalised and sorted in place). 0 or 1 contact -> 1.
+double stability_index(std::vector<double> angles);
+
+}  // namespace fabric

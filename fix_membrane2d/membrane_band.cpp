@@ -1,0 +1,63 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "membrane_chain.h"
+
+namespace membrane {
+
+namespace {
+
+// Identity of the MPI reduction of each side (MAX on the Right, MIN on the Left).
+double empty_extent(Side side) {
+  return side == Side::Right ? std::numeric_limits<double>::lowest()
+                             : std::numeric_limits<double>::max();
+}
+
+}  // namespace
+
+void BandSlices::reset(Side side, Platens platens, double h) {
+  side_ = side;
+  ylo_ = platens.ylo;
+  const double span = platens.yhi - platens.ylo;
+  h_ = (h > 0.0 && std::isfinite(h)) ? h : std::max(span, 1.0);
+  long n = (span > 0.0 && std::isfinite(span)) ? static_cast<long>(std::ceil(span / h_)) : 1;
+  n = std::clamp(n, 1L, 1000000L);
+  extent_.assign(static_cast<std::size_t>(n), empty_extent(side));
+}
+
+int BandSlices::slice_of(double y) const {
+  const double f = std::floor((y - ylo_) / h_);
+  const double last = static_cast<double>(extent_.size()) - 1.0;
+  if (!(f > 0.0)) return 0;  // also NaN
+  return static_cast<int>(std::min(f, last));
+}
+
+void BandSlices::add(double x, double y, double r) {
+  if (extent_.empty()) return;
+  double& e = extent_[static_cast<std::size_t>(slice_of(y))];
+  e = side_ == Side::Right ? std::max(e, x + r) : std::min(e, x - r);
+}
+
+double BandSlices::outer_edge_near(double y) const {
+  if (extent_.empty()) return empty_extent(side_);
+  const int i = slice_of(y);
+  const int last = static_cast<int>(extent_.size()) - 1;
+  double e = empty_extent(side_);
+  for (int k = std::max(0, i - 1); k <= std::min(last, i + 1); ++k)
+    e = side_ == Side::Right ? std::max(e, extent_[k]) : std::min(e, extent_[k]);
+  return e;
+}
+
+bool BandSlices::contains(double x, double y, double r, double width) const {
+  double e = outer_edge_near(y);
+  // The disk itself bounds the edge, so an empty neighbourhood never rejects it.
+  if (side_ == Side::Right) {
+    e = std::max(e, x + r);
+    return x + r >= e - width;
+  }
+  e = std::min(e, x - r);
+  return x - r <= e + width;
+}
+
+}  // namespace membrane

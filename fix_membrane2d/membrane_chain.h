@@ -1,0 +1,155 @@
+#pragma once
+// LIGGGHTS-free geometry of fix membrane2d (see /work/shared/spec/membrane2d.md):
+// chain of outermost disks per side, its polyline, membrane forces, escapees,
+// sample area / widths and the band selection. Lengths in m, pressure in Pa,
+// thickness in m, forces in N. Kept free of LIGGGHTS so it can be tested exactly.
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace membrane {
+
+enum class Side { Left, Right };
+
+struct Disk {
+  long tag;
+  double x, y, r;
+};
+
+struct Platens {
+  double ylo, yhi;  // bottom and top platen surfaces
+};
+
+using Polyline = std::vector<Eigen::Vector2d>;
+
+struct ChainResult {
+  bool ok = false;
+  std::string failure;       // set when !ok: why no chain reaches the top platen
+  std::vector<int> chain;    // indices into the input, bottom -> top
+  Polyline polyline;         // chain.size() + 1 points, (x_first, ylo) ... (x_last, yhi)
+  std::vector<int> escaped;  // ascending indices; includes the pruned dead ends
+  int pruned = 0;            // dead-end / hanging-cluster disks cut out of the walk
+  int failed_starts = 0;     // start candidates whose walk could not reach the top
+};
+
+// Finds the membrane chain of one side. Keeps its (hashed) cell list and graph buffers
+// between calls, so after warm-up a call allocates nothing (when the caller
+// also reuses its ChainResult).
+//
+// Walk: starts at the bottom-touching disk with the largest x (Right) / smallest
+// x (Left), ties by lowest tag, with a virtual previous direction straight down;
+// at each disk it takes the neighbour first counter-clockwise (Right) / clockwise
+// (Left) from the direction back to the previous disk, i.e. it follows the outer
+// face of the contact graph with the outside on its right (Right side). It stops
+// at the first disk touching the top platen. Returning to a disk already in the
+// chain truncates the chain to it (pruned disks become escapees).
+// Failure: a start whose walk comes back to its first edge (its component never
+// touches the top) is abandoned and the next candidate (next largest x on Right)
+// not already visited by a failed walk is tried; if none succeeds, ok=false with
+// a reason, chain/polyline empty, escaped empty: the caller must not apply
+// membrane forces from such a result.
+class ChainFinder {
+ public:
+  // tol: gap tolerance (m). Two disks are linked when dist - ri - rj <= tol; a
+  // disk touches the bottom when y - r - ylo <= tol, the top when yhi - y - r <= tol.
+  // Results depend only on the set of disks (not on their order), given unique tags.
+  void find(const std::vector<Disk>& disks, Side side, Platens platens, double tol,
+            ChainResult& out);
+  ChainResult find(const std::vector<Disk>& disks, Side side, Platens platens, double tol);
+
+  // Contact graph of the last find() (for diagnostics and tests).
+  int degree(int i) const { return adj_start_[i + 1] - adj_start_[i]; }
+  bool linked(int i, int j) const;
+
+ private:
+  void build_graph(const std::vector<Disk>& disks, double tol);
+  // Returns true when the top is reached; chain_ holds the result.
+  bool walk(const std::vector<Disk>& disks, int start, Side side, Platens platens,
+            double tol);
+  int next_neighbour(const std::vector<Disk>& disks, int cur, int prev, Side side) const;
+  void bin_segments(const Polyline& polyline, Platens platens, double bin_height);
+  int bin_of(double y) const;
+  bool outside_binned(double x, double y, const Polyline& polyline, Side side) const;
+
+  std::vector<int> cell_start_, cell_items_, cell_of_;  // cell_of_: hash bucket
+  std::vector<long long> cell_x_, cell_y_;
+  std::vector<int> edge_i_, edge_j_;
+  std::vector<int> adj_start_, adj_, fill_;
+  std::vector<int> candidates_;
+  std::vector<int> chain_pos_;  // position in the current chain or -1
+  std::vector<char> pruned_, visited_;
+  std::vector<int> chain_, walked_;  // walked_: disks ever pushed in the current walk
+  double rmax_ = 0.0;
+  // Polyline segments by horizontal slab, for the escapee parity test.
+  std::vector<int> bin_start_, bin_items_;
+  double bin_lo_ = 0.0, bin_h_ = 1.0;
+  int nbin_ = 1;
+};
+
+// P_0 = (x_first, ylo), P_k = contact point of chain disks k-1 and k (0-based),
+// P_n = (x_last, yhi). Used after find() and on steps where a kept chain is
+// re-evaluated at current positions. Empty chain -> empty polyline.
+void polyline_from_chain(const std::vector<Disk>& disks, const std::vector<int>& chain,
+                         Platens platens, Polyline& out);
+Polyline polyline_from_chain(const std::vector<Disk>& disks, const std::vector<int>& chain,
+                             Platens platens);
+
+// One force per chain disk (disk k owns segment P_k -> P_{k+1}), pointing inward:
+// Right F = p t (-dy, dx), Left F = p t (dy, -dx). Their sum is exactly (to
+// round-off) p t (-Dy, Dx) on the Right and p t (Dy, -Dx) on the Left with
+// D = polyline.back() - polyline.front().
+void chain_forces(const Polyline& polyline, Side side, double pressure, double thickness,
+                  std::vector<Eigen::Vector2d>& out);
+std::vector<Eigen::Vector2d> chain_forces(const Polyline& polyline, Side side,
+                                          double pressure, double thickness);
+
+// p t 2r horizontally inward (-x on Right, +x on Left).
+Eigen::Vector2d escapee_force(const Disk& d, Side side, double pressure, double thickness);
+
+// Parity of a horizontal ray cast outward (+x Right, -x Left) from p against the
+// side's polyline: true when p is outside the sample. Meaningful for
+// polyline.front().y < p.y < polyline.back().y.
+bool outside_polyline(const Eigen::Vector2d& p, const Polyline& polyline, Side side);
+
+// Area of the polygon left polyline (bottom->top) + right polyline (top->bottom),
+// closed along the platens. Oriented so a normal sample is positive; a negative
+// value means the two sides cross.
+double sample_area(const Polyline& left, const Polyline& right);
+// Area between one side's polyline and a straight opposite boundary x = x_wall
+// (for a sample with a membrane on one side only); positive for a normal sample.
+double side_area(const Polyline& polyline, Side side, double x_wall);
+// x_right(y) - x_left(y) using the outermost crossing of each polyline with the
+// horizontal line at y (max x on the right, min x on the left). NaN when a
+// polyline does not cross y. Mean width = sample_area / (yhi - ylo).
+double width_at(double y, const Polyline& left, const Polyline& right);
+// Outermost x where the polyline crosses the horizontal line at y, NaN if none.
+double outermost_x_at(double y, const Polyline& polyline, Side side);
+
+// Band selection on local particles, so the band follows the current edge.
+// Usage per step: reset(); add() each local disk; MPI_Allreduce(extents().data(),
+// n, MPI_DOUBLE, side == Right ? MPI_MAX : MPI_MIN); then contains() per local disk.
+// Empty slices hold lowest() (Right) / max() (Left) so the reduction needs no
+// special case.
+class BandSlices {
+ public:
+  // Slices of height h from ylo up to yhi (at least one). h > 0.
+  void reset(Side side, Platens platens, double h);
+  void add(double x, double y, double r);
+  std::vector<double>& extents() { return extent_; }
+  const std::vector<double>& extents() const { return extent_; }
+  int slice_of(double y) const;  // clamped to [0, n-1]
+  // Outermost extent of the slice of y and its two neighbours.
+  double outer_edge_near(double y) const;
+  // True when the disk reaches to within `width` of outer_edge_near(y), i.e.
+  // x + r >= edge - width (Right), x - r <= edge + width (Left).
+  bool contains(double x, double y, double r, double width) const;
+
+ private:
+  Side side_ = Side::Right;
+  double ylo_ = 0.0, h_ = 1.0;
+  std::vector<double> extent_;
+};
+
+}  // namespace membrane
