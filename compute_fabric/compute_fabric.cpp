@@ -253,7 +253,13 @@ void ComputeFabric::gather_contacts()
   if (gathered_step == update->ntimestep) return;
   gathered_step = update->ntimestep;
 
-  if (contacts->invoked_local != update->ntimestep) contacts->compute_local();
+  if (contacts->invoked_local != update->ntimestep) {
+    // Ghost velocities date from the start of the step; the contact model's
+    // damping terms need the current ones, or a contact across a processor
+    // boundary would differ from the same contact inside one rank.
+    comm->forward_comm();
+    contacts->compute_local();
+  }
 
   const int nrows = contacts->size_local_rows;
   double **rows = contacts->get_data();

@@ -185,7 +185,7 @@ void FixMembrane2d::parse_input(Input &in, const char *arg, const char *name)
   char *end = nullptr;
   in.value = strtod(arg, &end);
   if (*end != '\0' || !std::isfinite(in.value))
-    error->all(FLERR, msg(std::string(name) + " must be a number or v_name, got '" + arg + "'").c_str());
+    error->all(FLERR, msg(std::string(name) + " must be a finite number or v_name, got '" + arg + "'").c_str());
 }
 
 void FixMembrane2d::init_input(Input &in, const char *name)

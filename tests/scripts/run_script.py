@@ -40,7 +40,8 @@ def run(exe, np_, script, workdir, timeout, testdir=None):
     if np_ > 1:
         cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
     try:
-        p = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, timeout=timeout)
+        p = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, errors="replace",
+                           timeout=timeout)
     except subprocess.TimeoutExpired:
         return 124, "TIMEOUT after %d s" % timeout
     return p.returncode, p.stdout + p.stderr

@@ -1,0 +1,133 @@
+/* ----------------------------------------------------------------------
+   fix damping/local: see fix_damping_local.h and doc/fix_damping_local.md
+------------------------------------------------------------------------- */
+
+#include "fix_damping_local.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "modify.h"
+#include "update.h"
+
+#include "local_damping.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+
+std::string msg(const std::string &text) { return "Fix damping/local: " + text; }
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
+  Fix(lammps, narg, arg),
+  alpha(0.0), damp_torque(true), warned_order(false)
+{
+  bool have_alpha = false, torque_given = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key != "alpha" && key != "torque")
+      error->all(FLERR, msg("unknown keyword '" + key + "' (expected alpha or torque)").c_str());
+    if (iarg + 1 >= narg)
+      error->all(FLERR, msg("keyword '" + key + "' needs a value").c_str());
+    const std::string value = arg[iarg + 1];
+    if (key == "alpha") {
+      char *end = nullptr;
+      alpha = strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0')
+        error->all(FLERR, msg("alpha must be a number, got '" + value + "'").c_str());
+      if (!(alpha >= 0.0 && alpha < 1.0))
+        error->all(FLERR, msg("alpha must be >= 0 and < 1, got '" + value + "'").c_str());
+      have_alpha = true;
+    } else {
+      if (value != "yes" && value != "no")
+        error->all(FLERR, msg("torque must be yes or no, got '" + value + "'").c_str());
+      damp_torque = value == "yes";
+      torque_given = true;
+    }
+    iarg += 2;
+  }
+  if (!have_alpha) error->all(FLERR, msg("missing keyword 'alpha' (0 <= alpha < 1)").c_str());
+
+  // without rotational degrees of freedom the default 'torque yes' has nothing to do
+  const bool has_rotation = atom->torque_flag && atom->omega_flag;
+  if (damp_torque && !has_rotation) {
+    if (torque_given)
+      error->all(FLERR, msg("torque yes needs per-atom torque and omega (atom style sphere/granular)").c_str());
+    damp_torque = false;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixDampingLocal::setmask()
+{
+  return POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixDampingLocal::init()
+{
+  if (strstr(update->integrate_style, "verlet") == nullptr)
+    error->all(FLERR, msg("works with run_style verlet only").c_str());
+
+  // Forces added in post_force by fixes defined after this one are not damped.
+  // fix enforce2d only zeroes components, other damping/local fixes are fine.
+  if (comm->me != 0 || warned_order) return;
+  int self = -1;
+  for (int i = 0; i < modify->nfix; i++)
+    if (modify->fix[i] == this) self = i;
+  for (int i = self + 1; i < modify->nfix; i++) {
+    const Fix *other = modify->fix[i];
+    if (!(modify->fmask[i] & POST_FORCE)) continue;
+    if (strcmp(other->style, "enforce2d") == 0 || strcmp(other->style, style) == 0) continue;
+    error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
+                              ") is defined after fix " + id + " and acts in post_force: the forces it adds "
+                              "are not damped; define fix " + id + " last").c_str());
+    warned_order = true;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the forces of the setup step are integrated in the first half step of
+   the run, so they are damped too (Modify::setup calls setup() of every
+   fix in definition order, like post_force)
+------------------------------------------------------------------------- */
+
+void FixDampingLocal::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   v here is the half-step velocity v(t + dt/2) of velocity Verlet: the
+   only velocity there is when the forces at t + dt are known
+------------------------------------------------------------------------- */
+
+void FixDampingLocal::post_force(int)
+{
+  double **f = atom->f;
+  double **v = atom->v;
+  int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) damping::apply_local_damping(f[i], v[i], 3, alpha);
+
+  if (!damp_torque) return;
+  double **torque = atom->torque;
+  double **omega = atom->omega;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) damping::apply_local_damping(torque[i], omega[i], 3, alpha);
+}

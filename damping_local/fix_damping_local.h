@@ -1,0 +1,44 @@
+/* ----------------------------------------------------------------------
+   fix damping/local: PFC's local (non-viscous) damping (Itasca PFC manual;
+   Momeni et al. 2024, eq. 5). In post_force, for each owned atom of the
+   group and each component, the unbalanced force becomes
+   F + F_d with F_d = -alpha |F| sign(v), and the torque T + T_d with
+   T_d = -alpha |T| sign(omega). See doc/fix_damping_local.md.
+
+   It damps the force as it stands when its post_force runs: LIGGGHTS calls
+   post_force in the order the fixes were defined, so define this fix after
+   every fix that adds forces (addforce, gravity, wall/gran, membrane2d, ...).
+   Maths in local_damping.h (no LIGGGHTS).
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(damping/local,FixDampingLocal)
+
+#else
+
+#ifndef LMP_FIX_DAMPING_LOCAL_H
+#define LMP_FIX_DAMPING_LOCAL_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixDampingLocal : public Fix {
+ public:
+  FixDampingLocal(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void post_force(int);
+
+ private:
+  double alpha;
+  bool damp_torque;
+  bool warned_order;   // the fix-order warning is given once
+};
+
+}
+
+#endif
+#endif
