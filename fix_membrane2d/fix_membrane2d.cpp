@@ -160,6 +160,9 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
 
 FixMembrane2d::~FixMembrane2d()
 {
+  // after 'unfix' the chain disks are ordinary disks again, with their friction
+  if (membrane_type > 0 && atom && atom->type)
+    for (SideState &s : sides) switch_types(s.chain_tags, {});
   for (Input *in : {&pressure_in, &ylo_in, &yhi_in}) delete[] in->varname;
   delete[] polyline_file;
   if (polyline_fp) fclose(polyline_fp);
