@@ -53,8 +53,8 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
 {
   if (domain->dimension != 2)
     error->all(FLERR, "Compute fabric requires dimension 2");
-  if (atom->tag_enable == 0)
-    error->all(FLERR, "Compute fabric requires atom IDs");
+  if (atom->tag_enable == 0 || atom->map_style == 0)
+    error->all(FLERR, "Compute fabric requires atom IDs and an atom map (atom_modify map array)");
   if (!atom->radius_flag)
     error->all(FLERR, "Compute fabric requires atom style sphere (granular)");
 
@@ -271,6 +271,10 @@ void ComputeFabric::gather_contacts()
   for (int r = 0; r < nrows; r++) {
     const double *row = rows[r];
     const double *xa = row + ox, *xb = row + ox + 3;
+    // a pair/gran/local of group all (the user's) reports contacts outside our group
+    const int ia = atom->map(static_cast<int>(row[oid]));
+    const int ib = atom->map(static_cast<int>(row[oid + 1]));
+    if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit)) continue;
     if (use_region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
       continue;
     double rec[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
