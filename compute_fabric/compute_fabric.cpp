@@ -200,7 +200,15 @@ void ComputeFabric::create_contacts_compute()
   args[3] = (char *) "pos";
   args[4] = (char *) "id";
   args[5] = (char *) "force";
+  // pair/gran/local refuses to be created after a run ("define this compute
+  // before first run"), which includes any script that starts with read_restart.
+  // The check protects its optional 'history' columns, whose layout is fixed when
+  // the pair style first runs; we ask for pos, id and force only, which the pair
+  // reports at any time, so we create it as if at step 0.
+  const bigint now = update->ntimestep;
+  update->ntimestep = 0;
   modify->add_compute(6, args);
+  update->ntimestep = now;
   contacts = static_cast<ComputePairGranLocal *>(modify->compute[modify->ncompute - 1]);
 }
 

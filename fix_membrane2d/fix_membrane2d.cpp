@@ -235,7 +235,7 @@ void FixMembrane2d::init()
   }
 
   compute_d50();
-  if (band_width <= 0.0) band_width = 10.0 * d50;
+  if (band_width <= 0.0) band_width = 4.0 * d50;
   if (tolerance < 0.0) tolerance = 0.02 * d50;
   force_detection = true;
 }
@@ -338,17 +338,13 @@ void FixMembrane2d::gather_band(SideState &s)
   }
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
+  // No sorting: the chain search depends on the set of disks, not on their
+  // order (ties are broken by tag), so any rank count gives the same chain.
   const size_t n = recvbuf.size() / BAND_FIELDS;
   s.band.resize(n);
   band_type.resize(n);
-  std::vector<size_t> order(n);
-  for (size_t k = 0; k < n; k++) order[k] = k;
-  const double *buf = recvbuf.data();
-  std::sort(order.begin(), order.end(), [buf](size_t p, size_t q) {
-    return buf[p * BAND_FIELDS + B_TAG] < buf[q * BAND_FIELDS + B_TAG];
-  });
   for (size_t k = 0; k < n; k++) {
-    const double *rec = buf + order[k] * BAND_FIELDS;
+    const double *rec = recvbuf.data() + k * BAND_FIELDS;
     s.band[k] = Disk{static_cast<long>(rec[B_TAG]), rec[B_X], rec[B_Y], rec[B_R]};
     band_type[k] = static_cast<int>(rec[B_TYPE]);
   }
@@ -366,11 +362,6 @@ void FixMembrane2d::detect_chains()
     SideState &s = sides[k];
     if (!s.active) continue;
     gather_band(s);
-    // the type a disk had before it joined the chain, as seen by every rank
-    for (size_t b = 0; b < s.band.size(); b++)
-      if (membrane_type > 0 && band_type[b] != membrane_type)
-        observed_type[s.band[b].tag] = band_type[b];
-
     finder.find(s.band, s.side, membrane::Platens{ylo, yhi}, tolerance, result);
     if (!result.ok) {
       failures++;
@@ -395,7 +386,12 @@ void FixMembrane2d::detect_chains()
       s.escaped_tags.push_back(s.band[idx].tag);
       s.escaped_radius.push_back(s.band[idx].r);
     }
-    if (membrane_type > 0) switch_types(old_tags, s.chain_tags);
+    if (membrane_type > 0) {
+      // the type a disk has when it joins the chain, as seen by every rank
+      for (int idx : result.chain)
+        if (band_type[idx] != membrane_type) observed_type[s.band[idx].tag] = band_type[idx];
+      switch_types(old_tags, s.chain_tags);
+    }
   }
 }
 

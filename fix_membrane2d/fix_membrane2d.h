@@ -76,7 +76,7 @@ class FixMembrane2d : public Fix {
 
   Input pressure_in, ylo_in, yhi_in;
   double thickness;
-  double band_width;       // <= 0: 10 x D50 of the group, set in init()
+  double band_width;       // <= 0: 4 x D50 of the group, set in init()
   double tolerance;        // < 0: 0.02 x D50
   double d50;
   int detect_every;
@@ -88,7 +88,7 @@ class FixMembrane2d : public Fix {
   SideState sides[2];      // LEFT, RIGHT
   membrane::ChainFinder finder;
   membrane::ChainResult result;
-  std::map<long, int> observed_type;   // band tag -> its own (not frictionless) type
+  std::map<long, int> observed_type;   // chain tag -> its own (not frictionless) type
   std::vector<int> band_type;          // type of each gathered band disk
   std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
 

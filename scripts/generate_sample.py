@@ -1,0 +1,145 @@
+#!/usr/bin/python3
+"""Generate the 2D biaxial sample: disks at HALF size, without overlap, in a box.
+
+Writes a LIGGGHTS data file (atom_style granular: ``atom-ID type diameter density
+x y z``, z = 0) whose disks the preparation script (examples/biaxial/in.prepare)
+grows to full size.
+
+Size distribution ("uniform by mass" between d_min = 0.5 mm and d_max = 3 mm)
+----------------------------------------------------------------------------
+In 2D the mass of a disk is m = pi d^2/4 * rho (unit thickness).  "Uniform by
+mass" means the mass fraction carried by diameters in [d, d + dd] is the same for
+every d:  g(d) = 1/(d_max - d_min).  The number pdf is therefore
+    f(d) = g(d)/d^2 / int(g/d^2) = [d_min d_max/(d_max - d_min)] / d^2 ,
+with number CDF F(d) = (1/d_min - 1/d)/(1/d_min - 1/d_max), sampled by inversion
+    d(u) = 1 / (1/d_min - u (1/d_min - 1/d_max)),  u in (0, 1).
+The mass CDF is linear, so D50 by mass = (d_min + d_max)/2 = 1.75 mm
+(the number median is 2 d_min d_max/(d_min + d_max) = 0.857 mm), and
+E[d^2] = d_min d_max, i.e. a mean disk area of pi d_min d_max/4 = 1.178 mm^2.
+
+The u values are stratified (u_i = (i + 0.5)/N in shuffled order, one random
+jitter per stratum), so that every sample, even a small one, follows the law
+closely; the count N is the smallest such that the full-size disks fill
+(1 - porosity) of the box:  N = ceil((1 - n) W H / (pi d_min d_max / 4))
+(8 403 for 75 x 150 mm and n = 0.12).  in.prepare grows to the exact porosity.
+
+Placement: random sequential addition, largest disk first, at half diameter,
+centres kept one FULL radius away from the walls (so growing never pushes a disk
+into a wall), overlap test against a uniform cell grid.
+
+Deterministic: the same options (and numpy's PCG64 generator) give the same file.
+"""
+import argparse
+import math
+import sys
+
+import numpy as np
+
+
+def diameters(n, dmin, dmax, rng):
+    """n full-size diameters, uniform by mass on [dmin, dmax], stratified in u."""
+    u = (np.arange(n) + rng.random(n)) / n
+    rng.shuffle(u)
+    return 1.0 / (1.0 / dmin - u * (1.0 / dmin - 1.0 / dmax))
+
+
+def place(rhalf, rfull, width, height, rng, max_tries):
+    """Random sequential addition of disks of radius rhalf (sorted descending)."""
+    n = len(rhalf)
+    cell = 2.0 * rhalf.max()            # a disk overlaps only disks in the 3x3 cells
+    nx = max(1, int(width / cell))
+    ny = max(1, int(height / cell))
+    cx, cy = width / nx, height / ny
+    grid = [[[] for _ in range(ny)] for _ in range(nx)]
+    pos = np.zeros((n, 2))
+    for i in range(n):
+        r, m = rhalf[i], rfull[i]
+        if width - 2 * m <= 0 or height - 2 * m <= 0:
+            sys.exit("box too small for a disk of diameter %g" % (2 * m))
+        for _ in range(max_tries):
+            x = m + rng.random() * (width - 2 * m)
+            y = m + rng.random() * (height - 2 * m)
+            ix = min(int(x / cx), nx - 1)
+            iy = min(int(y / cy), ny - 1)
+            ok = True
+            for jx in range(max(ix - 1, 0), min(ix + 2, nx)):
+                for jy in range(max(iy - 1, 0), min(iy + 2, ny)):
+                    for j in grid[jx][jy]:
+                        dx = x - pos[j, 0]
+                        dy = y - pos[j, 1]
+                        s = r + rhalf[j]
+                        if dx * dx + dy * dy < s * s:
+                            ok = False
+                            break
+                    if not ok:
+                        break
+                if not ok:
+                    break
+            if ok:
+                pos[i] = (x, y)
+                grid[ix][iy].append(i)
+                break
+        else:
+            sys.exit("could not place disk %d of %d after %d tries" % (i + 1, n, max_tries))
+    return pos
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--width", type=float, default=0.075, help="box width at scale 1 [m] (0.075)")
+    p.add_argument("--height", type=float, default=0.150, help="box height at scale 1 [m] (0.150)")
+    p.add_argument("--scale", type=float, default=1.0,
+                   help="size factor of the sample: box sides x scale, disk count x scale^2, "
+                        "disk sizes unchanged (1 = published sample, ~8400 disks)")
+    p.add_argument("--seed", type=int, default=12345, help="random seed (12345)")
+    p.add_argument("--dmin", type=float, default=0.5e-3, help="smallest full diameter [m] (0.5e-3)")
+    p.add_argument("--dmax", type=float, default=3.0e-3, help="largest full diameter [m] (3e-3)")
+    p.add_argument("--porosity", type=float, default=0.12,
+                   help="porosity of the full-size disks that sets the count (0.12)")
+    p.add_argument("--density", type=float, default=2e8, help="particle density [kg/m^3] (2e8)")
+    p.add_argument("--margin", type=float, default=0.3,
+                   help="simulation box beyond the walls, as a fraction of width/height (0.3): "
+                        "room for the side walls to move out")
+    p.add_argument("--ntypes", type=int, default=3,
+                   help="atom types declared (3): 1 = soil, 2 = membrane (reserved), 3 = walls")
+    p.add_argument("--max-tries", type=int, default=100000)
+    p.add_argument("--out", default="sample.data", help="output data file (sample.data)")
+    a = p.parse_args()
+
+    width, height = a.width * a.scale, a.height * a.scale
+    rng = np.random.Generator(np.random.PCG64(a.seed))
+    mean_area = math.pi * a.dmin * a.dmax / 4.0
+    n = int(math.ceil((1.0 - a.porosity) * width * height / mean_area))
+    d = np.sort(diameters(n, a.dmin, a.dmax, rng))[::-1]
+    rfull = 0.5 * d
+    rhalf = 0.25 * d
+    pos = place(rhalf, rfull, width, height, rng, a.max_tries)
+
+    solid = math.pi * np.sum(rfull ** 2)
+    por_full = 1.0 - solid / (width * height)
+    por_half = 1.0 - 0.25 * solid / (width * height)
+    # D50 by mass of the drawn sample
+    order = np.argsort(d)
+    cm = np.cumsum(d[order] ** 2)
+    d50 = d[order][np.searchsorted(cm, 0.5 * cm[-1])]
+    mx, my = a.margin * width, a.margin * height
+    with open(a.out, "w") as f:
+        f.write("LIGGGHTS data: %d disks at HALF size, uniform by mass %g-%g m (full), box %g x %g m, "
+                "seed %d, scale %g, full-size porosity %.6f, half-size porosity %.6f, D50(mass) %.6g m, "
+                "walls x 0 %.9g y 0 %.9g\n\n"
+                % (n, a.dmin, a.dmax, width, height, a.seed, a.scale, por_full, por_half, d50, width, height))
+        f.write("%d atoms\n" % n)
+        f.write("%d atom types\n\n" % a.ntypes)
+        f.write("%.9g %.9g xlo xhi\n" % (-mx, width + mx))
+        f.write("%.9g %.9g ylo yhi\n" % (-my, height + my))
+        f.write("-0.05 0.05 zlo zhi\n\n")
+        f.write("Atoms\n\n")
+        for i in range(n):
+            f.write("%d 1 %.9g %.9g %.9g %.9g 0\n" % (i + 1, 2 * rhalf[i], a.density, pos[i, 0], pos[i, 1]))
+    print("wrote %s: %d disks, box %.6g x %.6g m, full-size porosity %.5f (half size %.5f), "
+          "D50 by mass %.4g mm, d %.4g-%.4g mm (full)"
+          % (a.out, n, width, height, por_full, por_half, d50 * 1e3, d.min() * 1e3, d.max() * 1e3))
+
+
+if __name__ == "__main__":
+    main()
