@@ -327,6 +327,7 @@ void FixMembrane2d::gather_band(SideState &s)
   std::vector<double> &extent = slices.extents();
   MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
                 s.side == Side::Right ? MPI_MAX : MPI_MIN, world);
+  slices.finish();
 
   sendbuf.clear();
   for (int i = 0; i < nlocal; i++) {
@@ -379,7 +380,11 @@ void FixMembrane2d::detect_chains()
     }
     const std::vector<long> old_tags = s.chain_tags;
     s.chain_tags.clear();
-    for (int idx : result.chain) s.chain_tags.push_back(s.band[idx].tag);
+    s.chain_position.clear();
+    for (int idx : result.chain) {
+      s.chain_position[s.band[idx].tag] = s.chain_tags.size();
+      s.chain_tags.push_back(s.band[idx].tag);
+    }
     s.escaped_tags.clear();
     s.escaped_radius.clear();
     for (int idx : result.escaped) {
@@ -444,13 +449,15 @@ void FixMembrane2d::gather_chain_positions(SideState &s)
   const size_t n = s.chain_tags.size();
   if (recvbuf.size() != 4 * n)
     error->all(FLERR, msg("a chain particle was lost (deleted or out of the box)").c_str());
-  std::unordered_map<long, size_t> position;
-  for (size_t k = 0; k < n; k++) position[s.chain_tags[k]] = k;
+  if (s.chain_position.size() != n) {
+    s.chain_position.clear();
+    for (size_t k = 0; k < n; k++) s.chain_position[s.chain_tags[k]] = k;
+  }
   s.chain_disks.resize(n);
   for (size_t k = 0; k < n; k++) {
     const double *rec = recvbuf.data() + 4 * k;
     const long tag = static_cast<long>(rec[0]);
-    s.chain_disks[position[tag]] = Disk{tag, rec[1], rec[2], rec[3]};
+    s.chain_disks[s.chain_position.at(tag)] = Disk{tag, rec[1], rec[2], rec[3]};
   }
 }
 

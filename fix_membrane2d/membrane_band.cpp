@@ -24,6 +24,15 @@ void BandSlices::reset(Side side, Platens platens, double h) {
   long n = (span > 0.0 && std::isfinite(span)) ? static_cast<long>(std::ceil(span / h_)) : 1;
   n = std::clamp(n, 1L, 1000000L);
   extent_.assign(static_cast<std::size_t>(n), empty_extent(side));
+  near_.clear();
+}
+
+void BandSlices::finish() {
+  const int n = static_cast<int>(extent_.size());
+  near_.assign(extent_.size(), empty_extent(side_));
+  for (int i = 0; i < n; ++i)
+    for (int k = std::max(0, i - 1); k <= std::min(n - 1, i + 1); ++k)
+      near_[i] = side_ == Side::Right ? std::max(near_[i], extent_[k]) : std::min(near_[i], extent_[k]);
 }
 
 int BandSlices::slice_of(double y) const {
@@ -42,6 +51,7 @@ void BandSlices::add(double x, double y, double r) {
 double BandSlices::outer_edge_near(double y) const {
   if (extent_.empty()) return empty_extent(side_);
   const int i = slice_of(y);
+  if (near_.size() == extent_.size()) return near_[i];
   const int last = static_cast<int>(extent_.size()) - 1;
   double e = empty_extent(side_);
   for (int k = std::max(0, i - 1); k <= std::min(last, i + 1); ++k)

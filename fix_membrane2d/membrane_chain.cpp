@@ -20,12 +20,23 @@ bool touches_top(const Disk& d, Platens p, double tol) { return p.yhi - (d.y + d
 }  // namespace
 
 bool ChainFinder::linked(int i, int j) const {
-  for (int k = adj_start_[i]; k < adj_start_[i + 1]; ++k)
-    if (adj_[k] == j) return true;
-  return false;
+  int count = 0;
+  const int* nb = neighbours(i, count);
+  return std::find(nb, nb + count, j) != nb + count;
+}
+
+int ChainFinder::degree(int i) const {
+  int count = 0;
+  neighbours(i, count);
+  return count;
 }
 
 void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
+  // Only the cell list is built here: the walk needs the neighbours of the
+  // few disks it visits (the chain and its excursions), not the whole band's
+  // graph, so neighbours() finds them on first use.
+  disks_ = &disks;
+  tol_ = tol;
   const int n = static_cast<int>(disks.size());
   double xmin = std::numeric_limits<double>::max(), ymin = xmin, rmax = 0.0;
   for (const Disk& d : disks) {
@@ -37,27 +48,22 @@ void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
   rmax_ = rmax;
   // Any linked pair is at most 2 rmax + tol apart, so the 3x3 block of cells
   // around a disk holds all its possible contacts.
-  double cell = 2.0 * rmax + std::max(tol, 0.0);
-  if (!(cell > 0.0)) cell = 1.0;
+  cell_ = 2.0 * rmax + std::max(tol, 0.0);
+  if (!(cell_ > 0.0)) cell_ = 1.0;
   // Cells are hashed into ~2n buckets rather than laid out as a grid, so a
   // stray far-away disk costs nothing and the build stays O(n) for any layout.
-  std::size_t nbucket = 16;
-  while (nbucket < 2 * static_cast<std::size_t>(n)) nbucket *= 2;
+  nbucket_ = 16;
+  while (nbucket_ < 2 * static_cast<std::size_t>(n)) nbucket_ *= 2;
   const auto cell_index = [&](double v, double lo) {
     // Clamped so the conversion cannot overflow; disks that far apart are
     // never linked anyway.
-    return static_cast<long long>(std::floor(std::min((v - lo) / cell, 1e15)));
-  };
-  const auto bucket_of = [&](long long cx, long long cy) {
-    const auto ux = static_cast<unsigned long long>(cx), uy = static_cast<unsigned long long>(cy);
-    return static_cast<int>(((ux * 0x9E3779B97F4A7C15ULL) ^ (uy * 0xC2B2AE3D27D4EB4FULL)) >> 20 &
-                            (nbucket - 1));
+    return static_cast<long long>(std::floor(std::min((v - lo) / cell_, 1e15)));
   };
 
   cell_x_.assign(n, 0);
   cell_y_.assign(n, 0);
   cell_of_.assign(n, -1);
-  cell_start_.assign(nbucket + 1, 0);
+  cell_start_.assign(nbucket_ + 1, 0);
   for (int i = 0; i < n; ++i) {
     const Disk& d = disks[i];
     if (!finite_disk(d)) continue;
@@ -66,53 +72,53 @@ void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
     cell_of_[i] = bucket_of(cell_x_[i], cell_y_[i]);
     ++cell_start_[cell_of_[i] + 1];
   }
-  for (std::size_t c = 0; c < nbucket; ++c) cell_start_[c + 1] += cell_start_[c];
+  for (std::size_t c = 0; c < nbucket_; ++c) cell_start_[c + 1] += cell_start_[c];
   fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
   cell_items_.resize(n);
   for (int i = 0; i < n; ++i)
     if (cell_of_[i] >= 0) cell_items_[fill_[cell_of_[i]]++] = i;
 
-  edge_i_.clear();
-  edge_j_.clear();
-  for (int i = 0; i < n; ++i) {
-    if (cell_of_[i] < 0) continue;
-    const Disk& a = disks[i];
-    for (long long cy = cell_y_[i] - 1; cy <= cell_y_[i] + 1; ++cy) {
-      for (long long cx = cell_x_[i] - 1; cx <= cell_x_[i] + 1; ++cx) {
-        const int c = bucket_of(cx, cy);
-        for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-          const int j = cell_items_[k];
-          // The cell test keeps a pair from being found twice when two
-          // neighbour cells share a bucket.
-          if (j <= i || cell_x_[j] != cx || cell_y_[j] != cy) continue;
-          const Disk& b = disks[j];
-          const double dx = b.x - a.x, dy = b.y - a.y, d2 = dx * dx + dy * dy;
-          const double reach = a.r + b.r + tol;
-          // Cheap reject with a margin; the exact test below is the definition.
-          if (reach < 0.0 || d2 > reach * reach * (1.0 + 1e-9)) continue;
-          const double dist = std::sqrt(d2);
-          // Coincident centres give no direction to walk along.
-          if (dist > 0.0 && dist - a.r - b.r <= tol) {
-            edge_i_.push_back(i);
-            edge_j_.push_back(j);
+  nb_start_.assign(n, -1);
+  nb_count_.assign(n, 0);
+  nb_pool_.clear();
+}
+
+int ChainFinder::bucket_of(long long cx, long long cy) const {
+  const auto ux = static_cast<unsigned long long>(cx), uy = static_cast<unsigned long long>(cy);
+  return static_cast<int>(((ux * 0x9E3779B97F4A7C15ULL) ^ (uy * 0xC2B2AE3D27D4EB4FULL)) >> 20 &
+                          (nbucket_ - 1));
+}
+
+const int* ChainFinder::neighbours(int i, int& count) const {
+  if (nb_start_[i] < 0) {
+    nb_start_[i] = static_cast<int>(nb_pool_.size());
+    if (cell_of_[i] >= 0) {
+      const std::vector<Disk>& disks = *disks_;
+      const Disk& a = disks[i];
+      for (long long cy = cell_y_[i] - 1; cy <= cell_y_[i] + 1; ++cy) {
+        for (long long cx = cell_x_[i] - 1; cx <= cell_x_[i] + 1; ++cx) {
+          const int c = bucket_of(cx, cy);
+          for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+            const int j = cell_items_[k];
+            // The cell test keeps a disk from being found twice when two
+            // neighbour cells share a bucket.
+            if (j == i || cell_x_[j] != cx || cell_y_[j] != cy) continue;
+            const Disk& b = disks[j];
+            const double dx = b.x - a.x, dy = b.y - a.y, d2 = dx * dx + dy * dy;
+            const double reach = a.r + b.r + tol_;
+            // Cheap reject with a margin; the exact test below is the definition.
+            if (reach < 0.0 || d2 > reach * reach * (1.0 + 1e-9)) continue;
+            const double dist = std::sqrt(d2);
+            // Coincident centres give no direction to walk along.
+            if (dist > 0.0 && dist - a.r - b.r <= tol_) nb_pool_.push_back(j);
           }
         }
       }
     }
+    nb_count_[i] = static_cast<int>(nb_pool_.size()) - nb_start_[i];
   }
-
-  adj_start_.assign(n + 1, 0);
-  for (std::size_t e = 0; e < edge_i_.size(); ++e) {
-    ++adj_start_[edge_i_[e] + 1];
-    ++adj_start_[edge_j_[e] + 1];
-  }
-  for (int i = 0; i < n; ++i) adj_start_[i + 1] += adj_start_[i];
-  fill_.assign(adj_start_.begin(), adj_start_.end() - 1);
-  adj_.resize(2 * edge_i_.size());
-  for (std::size_t e = 0; e < edge_i_.size(); ++e) {
-    adj_[fill_[edge_i_[e]]++] = edge_j_[e];
-    adj_[fill_[edge_j_[e]]++] = edge_i_[e];
-  }
+  count = nb_count_[i];
+  return nb_pool_.data() + nb_start_[i];
 }
 
 int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int prev,
@@ -124,8 +130,10 @@ int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int pre
   const double by = prev < 0 ? -1.0 : disks[prev].y - p.y;
   int best = -1;
   double best_ang = 0.0;
-  for (int k = adj_start_[cur]; k < adj_start_[cur + 1]; ++k) {
-    const int j = adj_[k];
+  int count = 0;
+  const int* nb = neighbours(cur, count);
+  for (int k = 0; k < count; ++k) {
+    const int j = nb[k];
     double ang;
     if (j == prev) {
       // Going back is the last resort (a dead end); set exactly so round-off
@@ -164,7 +172,9 @@ bool ChainFinder::walk(const std::vector<Disk>& disks, int start, Side side, Pla
 
   // The walk is a permutation of directed edges, so it can only fail to reach
   // the top by repeating its first edge; the step limit is a second fence.
-  const long limit = 2L * static_cast<long>(edge_i_.size()) + static_cast<long>(disks.size());
+  // Directed edges number at most n x (max degree); a disk touches at most ~2 pi /
+  // (2 asin(rmin / (rmin + rmax))) others, far below 64 for any real grading.
+  const long limit = 64L * static_cast<long>(disks.size()) + 1;
   int prev = -1, cur = start, first_from = -1, first_to = -1;
   for (long step = 0; step <= limit; ++step) {
     const int nxt = next_neighbour(disks, cur, prev, side);

@@ -60,7 +60,7 @@ class ChainFinder {
   ChainResult find(const std::vector<Disk>& disks, Side side, Platens platens, double tol);
 
   // Contact graph of the last find() (for diagnostics and tests).
-  int degree(int i) const { return adj_start_[i + 1] - adj_start_[i]; }
+  int degree(int i) const;
   bool linked(int i, int j) const;
 
  private:
@@ -75,8 +75,16 @@ class ChainFinder {
 
   std::vector<int> cell_start_, cell_items_, cell_of_;  // cell_of_: hash bucket
   std::vector<long long> cell_x_, cell_y_;
-  std::vector<int> edge_i_, edge_j_;
-  std::vector<int> adj_start_, adj_, fill_;
+  int bucket_of(long long cx, long long cy) const;
+  // Neighbours (gap <= tol) of disk i, found on first use and cached until the
+  // next find(): the walk visits a few hundred disks of a band of thousands.
+  const int* neighbours(int i, int& count) const;
+
+  const std::vector<Disk>* disks_ = nullptr;
+  double tol_ = 0.0, cell_ = 1.0;
+  std::size_t nbucket_ = 16;
+  mutable std::vector<int> nb_start_, nb_count_, nb_pool_;
+  std::vector<int> fill_;
   std::vector<int> candidates_;
   std::vector<int> chain_pos_;  // position in the current chain or -1
   std::vector<char> pruned_, visited_;
@@ -140,6 +148,9 @@ class BandSlices {
   std::vector<double>& extents() { return extent_; }
   const std::vector<double>& extents() const { return extent_; }
   int slice_of(double y) const;  // clamped to [0, n-1]
+  // Optional, after the reduction: tabulates outer_edge_near per slice, so that
+  // contains() costs one lookup per disk.
+  void finish();
   // Outermost extent of the slice of y and its two neighbours.
   double outer_edge_near(double y) const;
   // True when the disk reaches to within `width` of outer_edge_near(y), i.e.
@@ -150,6 +161,7 @@ class BandSlices {
   Side side_ = Side::Right;
   double ylo_ = 0.0, h_ = 1.0;
   std::vector<double> extent_;
+  std::vector<double> near_;  // outer edge of each slice and its neighbours, after finish()
 };
 
 }  // namespace membrane

@@ -135,3 +135,35 @@ TEST(MembraneBand, ReductionOfPartialExtentsMatchesSerial) {
     r0.extents()[k] = std::max(r0.extents()[k], r1.extents()[k]);
   EXPECT_EQ(r0.extents(), serial.extents());
 }
+
+// finish() only tabulates outer_edge_near: membership must not change.
+TEST(BandSlices, FinishGivesTheSameMembership) {
+  for (Side side : {Side::Left, Side::Right}) {
+    BandSlices plain, tabulated;
+    plain.reset(side, Platens{0.0, 10.0}, 1.3);
+    tabulated.reset(side, Platens{0.0, 10.0}, 1.3);
+    std::vector<Vector2d> centres;
+    std::vector<double> radii;
+    unsigned seed = 12345;
+    auto uniform = [&seed]() {
+      seed = seed * 1103515245u + 12345u;
+      return static_cast<double>((seed >> 8) & 0xFFFF) / 65536.0;
+    };
+    for (int k = 0; k < 400; ++k) {
+      centres.emplace_back(10.0 * uniform(), 10.0 * uniform());
+      radii.push_back(0.1 + 0.4 * uniform());
+      plain.add(centres.back().x(), centres.back().y(), radii.back());
+      tabulated.add(centres.back().x(), centres.back().y(), radii.back());
+    }
+    tabulated.finish();
+    int inside = 0;
+    for (std::size_t k = 0; k < centres.size(); ++k) {
+      const bool a = plain.contains(centres[k].x(), centres[k].y(), radii[k], 1.5);
+      EXPECT_EQ(a, tabulated.contains(centres[k].x(), centres[k].y(), radii[k], 1.5));
+      EXPECT_EQ(plain.outer_edge_near(centres[k].y()), tabulated.outer_edge_near(centres[k].y()));
+      inside += a;
+    }
+    EXPECT_GT(inside, 50);   // the band is neither empty ...
+    EXPECT_LT(inside, 350);  // ... nor everything
+  }
+}

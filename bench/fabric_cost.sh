@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Cost of one compute fabric call on the prepared 8 404-disk sample, with the
+# stability index, histogram and stress off ('basic') and on ('full'), on 1 and
+# 2 ranks: 200 steps with thermo output every step, minus the same run without
+# the compute, divided by 200; also as a multiple of one plain step.
+#   bench/fabric_cost.sh [RESTART]
+set -euo pipefail
+cd "$(dirname "$0")"
+restart=$(readlink -f "${1:-../out/biaxial/prepared.restart}")
+exe=$(readlink -f ../build/app/liggghts-membrane)
+[ -f "$restart" ] || { echo "no prepared sample $restart: run ./run.sh first"; exit 1; }
+csv=fabric_cost.csv
+echo "ranks,what,ms_per_step" > $csv
+for np in 1 2; do
+  for what in none basic full; do
+    line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.fabric_cost -log none \
+             -var restart "$restart" -var what $what \
+             -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
+    echo "$np,$what,$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')" >> $csv
+  done
+done
+/usr/bin/python3 - "$csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+for np_ in sorted({r["ranks"] for r in rows}):
+    t = {r["what"]: float(r["ms_per_step"]) for r in rows if r["ranks"] == np_}
+    print("ranks %s: plain step %.3f ms" % (np_, t["none"]))
+    for w in ("basic", "full"):
+        c = t[w] - t["none"]
+        print("  compute fabric %-5s %.3f ms per call = %.2f plain steps" % (w, c, c / t["none"]))
+PY

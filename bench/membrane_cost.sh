@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Step time of the 8 404-disk biaxial shear with: no lateral boundary (platens
+# only), fix membrane2d every 1 and every 10, and rigid servo side walls, on 1
+# and 2 ranks. Prints the times and the ratios to 'none', measured in one run.
+#   bench/membrane_cost.sh [RESTART] [NSTEPS]
+# RESTART: a prepared full-size sample (./run.sh writes out/biaxial/prepared.restart).
+set -euo pipefail
+cd "$(dirname "$0")"
+restart=$(readlink -f "${1:-../out/biaxial/prepared.restart}")
+nsteps=${2:-2000}
+exe=$(readlink -f ../build/app/liggghts-membrane)
+[ -f "$restart" ] || { echo "no prepared sample $restart: run ./run.sh first"; exit 1; }
+csv=membrane_cost.csv
+echo "ranks,lateral,every,ms_per_step" > $csv
+for np in 1 2; do
+  for variant in "none 1" "membrane 1" "membrane 10" "rigid 1"; do
+    set -- $variant
+    line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.step_cost -log none \
+             -var restart "$restart" -var lateral "$1" -var every "$2" -var nsteps "$nsteps" \
+             -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
+    ms=$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')
+    echo "$np,$1,$2,$ms" >> $csv
+  done
+done
+/usr/bin/python3 - "$csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+for np_ in sorted({r["ranks"] for r in rows}):
+    sel = [r for r in rows if r["ranks"] == np_]
+    base = float(next(r["ms_per_step"] for r in sel if r["lateral"] == "none"))
+    print("ranks %s:" % np_)
+    for r in sel:
+        t = float(r["ms_per_step"])
+        name = r["lateral"] + (" every %s" % r["every"] if r["lateral"] == "membrane" else "")
+        print("  %-20s %8.3f ms/step  x%.3f of none (%+.1f %%)" % (name, t, t / base, 100 * (t / base - 1)))
+PY
