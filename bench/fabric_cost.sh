@@ -12,11 +12,11 @@ exe=$(readlink -f ../build/app/liggghts-membrane)
 csv=fabric_cost.csv
 echo "ranks,what,ms_per_step" > $csv
 for np in 1 2; do
-  for what in none basic full; do
+  for what in 0:none 1:basic 2:full; do
     line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.fabric_cost -log none \
-             -var restart "$restart" -var what $what \
+             -var restart "$restart" -var what ${what%%:*} \
              -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
-    echo "$np,$what,$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')" >> $csv
+    echo "$np,${what#*:},$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')" >> $csv
   done
 done
 /usr/bin/python3 - "$csv" <<'PY'

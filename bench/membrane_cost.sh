@@ -13,13 +13,13 @@ exe=$(readlink -f ../build/app/liggghts-membrane)
 csv=membrane_cost.csv
 echo "ranks,lateral,every,ms_per_step" > $csv
 for np in 1 2; do
-  for variant in "none 1" "membrane 1" "membrane 10" "rigid 1"; do
+  for variant in "none 0 1" "membrane 1 1" "membrane 1 10" "rigid 2 1"; do
     set -- $variant
     line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.step_cost -log none \
-             -var restart "$restart" -var lateral "$1" -var every "$2" -var nsteps "$nsteps" \
+             -var restart "$restart" -var lateral "$2" -var every "$3" -var nsteps "$nsteps" \
              -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
     ms=$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')
-    echo "$np,$1,$2,$ms" >> $csv
+    echo "$np,$1,$3,$ms" >> $csv
   done
 done
 /usr/bin/python3 - "$csv" <<'PY'

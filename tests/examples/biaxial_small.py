@@ -1,0 +1,103 @@
+#!/usr/bin/python3
+"""The biaxial examples, small: a quarter-size sample (526 disks) prepared and
+sheared to 1 % axial strain with rigid walls and with fix membrane2d, on NP
+ranks. Checks physical sanity that a broken example would fail:
+
+- preparation reaches porosity 0.12 when grown and holds 100 kPa on the walls;
+- no atom is lost in either shear run (thermo_modify lost error, and the count);
+- the confining stress is held: rigid sigma_3 within 10 % of 100 kPa on every
+  line after the first; membrane: the applied pressure is 100 kPa and the
+  Love-Weber sigma_xx inside the membrane within 15 % of it on average;
+- the stress ratio starts at 1 (+-0.1) and rises above 1.3;
+- the rigid and the membrane runs of the same sample differ.
+
+    biaxial_small.py EXE NP
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+EXAMPLE = os.path.join(ROOT, "examples", "biaxial")
+
+
+def run(cmd, log):
+    with open(log, "w") as f:
+        p = subprocess.run(cmd, cwd=EXAMPLE, stdout=f, stderr=subprocess.STDOUT, timeout=900)
+    if p.returncode != 0:
+        with open(log) as f:
+            sys.exit("FAIL: %s exited %d\n%s" % (" ".join(cmd[:8]), p.returncode, f.read()[-3000:]))
+    with open(log) as f:
+        return f.read()
+
+
+def table(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    cols = [l for l in lines if l.startswith("#")][-1].lstrip("#").split()
+    rows = [list(map(float, l.split())) for l in lines if l and not l.startswith("#")]
+    return {c: [r[k] for r in rows] for k, c in enumerate(cols)}
+
+
+def main():
+    exe, np_ = os.path.abspath(sys.argv[1]), sys.argv[2]
+    mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe]
+    failures = []
+
+    def check(ok, what):
+        print("%s %s" % ("ok  " if ok else "FAIL", what))
+        if not ok:
+            failures.append(what)
+
+    with tempfile.TemporaryDirectory() as work:
+        data, restart = os.path.join(work, "sample.data"), os.path.join(work, "prepared.restart")
+        subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "generate_sample.py"),
+                        "--scale", "0.25", "--seed", "7", "--out", data], check=True,
+                       stdout=subprocess.DEVNULL)
+        out = run(mpi + ["-in", "in.prepare", "-var", "data", data, "-var", "out", restart,
+                         "-log", "none"], os.path.join(work, "prepare.txt"))
+        prepared = [l for l in out.splitlines() if l.startswith("PREPARED porosity")]
+        check(len(prepared) == 1, "preparation finished")
+        if prepared:
+            w = prepared[0].split()
+            por = float(w[4].rstrip(","))
+            check(abs(por - 0.12) < 1e-6, "porosity after growth %.6f = 0.12" % por)
+
+        runs = {}
+        for case in ("rigid", "membrane"):
+            table_path = os.path.join(work, "shear_%s.txt" % case)
+            out = run(mpi + ["-in", "in.shear_%s" % case, "-var", "restart", restart,
+                             "-var", "eatarget", "0.01", "-var", "out", table_path, "-var", "ndump", "100000",
+                             "-log", "none"], os.path.join(work, "%s.txt" % case))
+            runs[case] = t = table(table_path)
+            check(len(t["ea"]) > 5 and t["ea"][-1] > 0.0099, "%s: reached 1 %% axial strain" % case)
+            atoms = [l for l in out.splitlines() if "Loop time" in l]
+            check(bool(atoms) and all("with 526 atoms" in l for l in atoms), "%s: no atom lost (526 atoms)" % case)
+            ratio = t["s1/s3"]
+            check(abs(ratio[0] - 1.0) < 0.1, "%s: stress ratio starts at 1 (%.3f)" % (case, ratio[0]))
+            check(max(ratio) > 1.3, "%s: stress ratio rises above 1.3 (max %.3f)" % (case, max(ratio)))
+            if case == "rigid":
+                s3 = t["s3"][1:]
+                worst = max(abs(s / 1e5 - 1) for s in s3)
+                check(worst < 0.10, "rigid: sigma_3 within 10 %% of 100 kPa (worst %.1f %%)" % (100 * worst))
+            else:
+                check(all(abs(s - 1e5) < 1e-6 for s in t["s3"]), "membrane: applied pressure 100 kPa")
+                lw = t["sxx_lw"][1:]
+                mean = sum(lw) / len(lw)
+                check(abs(mean / 1e5 - 1) < 0.15,
+                      "membrane: mean Love-Weber sigma_xx inside %.0f Pa within 15 %% of 100 kPa" % mean)
+                esc = [l for l in out.splitlines() if l.startswith("SHEAR done")]
+                check(bool(esc) and "chain failures 0" in esc[0], "membrane: no chain failure")
+        n = min(len(runs["rigid"]["s1"]), len(runs["membrane"]["s1"]))
+        diff = max(abs(a - b) for a, b in zip(runs["rigid"]["s1"][1:n], runs["membrane"]["s1"][1:n]))
+        check(diff > 1e3, "rigid and membrane runs differ (max |s1 difference| %.0f Pa)" % diff)
+
+    if failures:
+        print("FAILED:", "; ".join(failures))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
