@@ -88,31 +88,40 @@ def main():
     flag = d[a.flag] if a.flag else d[list(d)[-1]]
 
     colours = {0: "#d9d9d9", 1: "#4c72b0", 2: "#dd8452", 3: "#c44e52"}
-    fig, ax = plt.subplots(figsize=(6, 9))
-    patches = [Circle((x, y), r) for x, y, r in zip(d["x"], d["y"], d["radius"])]
-    pc = PatchCollection(patches, facecolor=[colours.get(int(f), "k") for f in flag],
-                         edgecolor="#666666", linewidth=0.3)
-    ax.add_collection(pc)
-
     fmax = max((np.hypot(s["chain"][:, 4], s["chain"][:, 5]).max() for s in p.values()
                 if len(s.get("chain", [])) > 0), default=1.0)
     rmean = float(np.mean(d["radius"]))
-    for side, s in p.items():
-        poly = s["polyline"]
-        ax.plot(poly[:, 0], poly[:, 1], "k-", lw=1.0, label="polyline" if side == "left" else None)
-        c = s["chain"]
-        scale = 4 * rmean / fmax
-        ax.quiver(c[:, 1], c[:, 2], c[:, 4] * scale, c[:, 5] * scale, angles="xy",
-                  scale_units="xy", scale=1, color="k", width=0.003)
-    ax.set_aspect("equal")
-    ax.autoscale_view()
+
+    def draw(ax, arrows):
+        patches = [Circle((x, y), r) for x, y, r in zip(d["x"], d["y"], d["radius"])]
+        ax.add_collection(PatchCollection(patches, facecolor=[colours.get(int(f), "k") for f in flag],
+                                          edgecolor="#666666", linewidth=0.3))
+        for s in p.values():
+            poly = s["polyline"]
+            ax.plot(poly[:, 0], poly[:, 1], "k-", lw=1.0)
+            c = s["chain"]
+            if arrows:
+                scale = 4 * rmean / fmax
+                ax.quiver(c[:, 1], c[:, 2], c[:, 4] * scale, c[:, 5] * scale, angles="xy",
+                          scale_units="xy", scale=1, color="k", width=0.003)
+        ax.set_aspect("equal")
+        ax.autoscale_view()
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+
     if a.zoom:
-        ax.set_xlim(a.zoom[0], a.zoom[1])
-        ax.set_ylim(a.zoom[2], a.zoom[3])
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    ax.set_title("fix membrane2d at step %d: chain (blue left, orange right),\n"
-                 "escaped (red), contact-point polyline and chain forces" % step, fontsize=9)
+        fig, (ax, axz) = plt.subplots(1, 2, figsize=(10, 8), gridspec_kw={"width_ratios": [1, 1.3]})
+        draw(ax, arrows=False)
+        ax.add_patch(plt.Rectangle((a.zoom[0], a.zoom[2]), a.zoom[1] - a.zoom[0], a.zoom[3] - a.zoom[2],
+                                   fill=False, ec="k", lw=1.2))
+        draw(axz, arrows=True)
+        axz.set_xlim(a.zoom[0], a.zoom[1])
+        axz.set_ylim(a.zoom[2], a.zoom[3])
+    else:
+        fig, ax = plt.subplots(figsize=(6, 9))
+        draw(ax, arrows=True)
+    fig.suptitle("fix membrane2d at step %d: chain disks (blue left, orange right), escaped (red),\n"
+                 "contact-point polyline and chain forces (arrows, length ~ force)" % step, fontsize=9)
     fig.tight_layout()
     fig.savefig(a.out, dpi=150)
     print("wrote", a.out)
