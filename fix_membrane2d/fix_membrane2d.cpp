@@ -39,7 +39,7 @@ namespace {
 enum { LEFT = 0, RIGHT = 1 };
 const char *side_name(int s) { return s == LEFT ? "left" : "right"; }
 
-enum BandField { B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
+enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
 
 std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
 
@@ -315,43 +315,63 @@ void FixMembrane2d::pre_force(int)
 
 /* ---------------------------------------------------------------------- */
 
-void FixMembrane2d::gather_band(SideState &s)
+void FixMembrane2d::gather_bands()
 {
-  membrane::BandSlices slices;
-  slices.reset(s.side, membrane::Platens{ylo, yhi}, band_width);
+  // One pass over the local disks for both sides: the slices are the same.
+  const membrane::Platens platens{ylo, yhi};
+  for (SideState &s : sides)
+    if (s.active) s.slices.reset(s.side, platens, band_width);
+  const membrane::BandSlices &slicing = sides[sides[LEFT].active ? LEFT : RIGHT].slices;
   double **x = atom->x;
   double *radius = atom->radius;
   const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++)
-    if (atom->mask[i] & groupbit) slices.add(x[i][0], x[i][1], radius[i]);
-  std::vector<double> &extent = slices.extents();
-  MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
-                s.side == Side::Right ? MPI_MAX : MPI_MIN, world);
-  slices.finish();
+  slice_of_atom.resize(nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int k = slicing.slice_of(x[i][1]);
+    slice_of_atom[i] = k;
+    for (SideState &s : sides)
+      if (s.active) s.slices.add_in_slice(k, x[i][0], radius[i]);
+  }
+  for (SideState &s : sides) {
+    if (!s.active) continue;
+    std::vector<double> &extent = s.slices.extents();
+    MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
+                  s.side == Side::Right ? MPI_MAX : MPI_MIN, world);
+    s.slices.finish();
+  }
 
   sendbuf.clear();
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    if (!slices.contains(x[i][0], x[i][1], radius[i], band_width)) continue;
-    const double rec[BAND_FIELDS] = {static_cast<double>(atom->tag[i]), x[i][0], x[i][1],
-                                     radius[i], static_cast<double>(atom->type[i])};
-    sendbuf.insert(sendbuf.end(), rec, rec + BAND_FIELDS);
+    for (int k = LEFT; k <= RIGHT; k++) {
+      if (!sides[k].active ||
+          !sides[k].slices.contains_in_slice(slice_of_atom[i], x[i][0], radius[i], band_width))
+        continue;
+      const double rec[BAND_FIELDS] = {static_cast<double>(k), static_cast<double>(atom->tag[i]),
+                                       x[i][0], x[i][1], radius[i],
+                                       static_cast<double>(atom->type[i])};
+      sendbuf.insert(sendbuf.end(), rec, rec + BAND_FIELDS);
+    }
   }
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
   // No sorting: the chain search depends on the set of disks, not on their
   // order (ties are broken by tag), so any rank count gives the same chain.
+  for (SideState &s : sides) {
+    s.band.clear();
+    s.band_type.clear();
+  }
   const size_t n = recvbuf.size() / BAND_FIELDS;
-  s.band.resize(n);
-  band_type.resize(n);
   for (size_t k = 0; k < n; k++) {
     const double *rec = recvbuf.data() + k * BAND_FIELDS;
-    s.band[k] = Disk{static_cast<long>(rec[B_TAG]), rec[B_X], rec[B_Y], rec[B_R]};
-    band_type[k] = static_cast<int>(rec[B_TYPE]);
+    SideState &s = sides[static_cast<int>(rec[B_SIDE])];
+    s.band.push_back(Disk{static_cast<long>(rec[B_TAG]), rec[B_X], rec[B_Y], rec[B_R]});
+    s.band_type.push_back(static_cast<int>(rec[B_TYPE]));
   }
-  if (n == 0)
-    error->all(FLERR, msg(std::string("no atoms in the ") + side_name(s.side == Side::Left ? LEFT : RIGHT) +
-                          " band").c_str());
+  for (int k = LEFT; k <= RIGHT; k++)
+    if (sides[k].active && sides[k].band.empty())
+      error->all(FLERR, msg(std::string("no atoms in the ") + side_name(k) + " band").c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -359,10 +379,10 @@ void FixMembrane2d::gather_band(SideState &s)
 void FixMembrane2d::detect_chains()
 {
   redetections++;
+  gather_bands();
   for (int k = LEFT; k <= RIGHT; k++) {
     SideState &s = sides[k];
     if (!s.active) continue;
-    gather_band(s);
     finder.find(s.band, s.side, membrane::Platens{ylo, yhi}, tolerance, result);
     if (!result.ok) {
       failures++;
@@ -394,7 +414,7 @@ void FixMembrane2d::detect_chains()
     if (membrane_type > 0) {
       // the type a disk has when it joins the chain, as seen by every rank
       for (int idx : result.chain)
-        if (band_type[idx] != membrane_type) observed_type[s.band[idx].tag] = band_type[idx];
+        if (s.band_type[idx] != membrane_type) observed_type[s.band[idx].tag] = s.band_type[idx];
       switch_types(old_tags, s.chain_tags);
     }
   }

@@ -68,7 +68,9 @@ class FixMembrane2d : public Fix {
     std::unordered_map<long, size_t> chain_position;  // tag -> index in chain_tags
     std::vector<long> escaped_tags;
     std::vector<double> escaped_radius;
-    std::vector<membrane::Disk> band;    // gathered at the last detection, by tag
+    membrane::BandSlices slices;
+    std::vector<membrane::Disk> band;    // gathered at the last detection
+    std::vector<int> band_type;          // type of each band disk
     std::vector<membrane::Disk> chain_disks;  // current positions, chain order
     membrane::Polyline polyline;
     std::vector<Eigen::Vector2d> forces;
@@ -91,7 +93,7 @@ class FixMembrane2d : public Fix {
   membrane::ChainFinder finder;
   membrane::ChainResult result;
   std::map<long, int> observed_type;   // chain tag -> its own (not frictionless) type
-  std::vector<int> band_type;          // type of each gathered band disk
+  std::vector<int> slice_of_atom;      // band slice of each local disk
   std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
 
   double pressure, ylo, yhi;
@@ -110,7 +112,7 @@ class FixMembrane2d : public Fix {
   void check_platens();
   void compute_d50();
   void allgather(int nper);
-  void gather_band(SideState &s);
+  void gather_bands();
   void detect_chains();
   void switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags);
   void gather_chain_positions(SideState &s);

@@ -44,7 +44,11 @@ int BandSlices::slice_of(double y) const {
 
 void BandSlices::add(double x, double y, double r) {
   if (extent_.empty()) return;
-  double& e = extent_[static_cast<std::size_t>(slice_of(y))];
+  add_in_slice(slice_of(y), x, r);
+}
+
+void BandSlices::add_in_slice(int slice, double x, double r) {
+  double& e = extent_[static_cast<std::size_t>(slice)];
   e = side_ == Side::Right ? std::max(e, x + r) : std::min(e, x - r);
 }
 
@@ -60,7 +64,17 @@ double BandSlices::outer_edge_near(double y) const {
 }
 
 bool BandSlices::contains(double x, double y, double r, double width) const {
-  double e = outer_edge_near(y);
+  return contains_in_slice(slice_of(y), x, r, width);
+}
+
+bool BandSlices::contains_in_slice(int slice, double x, double r, double width) const {
+  double e;
+  if (near_.size() == extent_.size() && !near_.empty()) {
+    e = near_[static_cast<std::size_t>(slice)];
+  } else {
+    const double y_mid = ylo_ + (slice + 0.5) * h_;
+    e = outer_edge_near(y_mid);
+  }
   // The disk itself bounds the edge, so an empty neighbourhood never rejects it.
   if (side_ == Side::Right) {
     e = std::max(e, x + r);

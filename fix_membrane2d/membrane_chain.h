@@ -156,6 +156,10 @@ class BandSlices {
   // True when the disk reaches to within `width` of outer_edge_near(y), i.e.
   // x + r >= edge - width (Right), x - r <= edge + width (Left).
   bool contains(double x, double y, double r, double width) const;
+  // The same with the slice of y already known (slice_of is the same for both
+  // sides of one sample, so a caller computes it once per disk).
+  void add_in_slice(int slice, double x, double r);
+  bool contains_in_slice(int slice, double x, double r, double width) const;
 
  private:
   Side side_ = Side::Right;
