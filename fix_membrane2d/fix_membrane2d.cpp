@@ -442,12 +442,11 @@ void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::v
     if (!std::binary_search(a.begin(), a.end(), tag)) change[tag] = membrane_type;
   if (change.empty()) return;
 
+  // the owned copy and every ghost image of each changed disk
   int *type = atom->type;
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) {
-    auto it = change.find(atom->tag[i]);
-    if (it != change.end()) type[i] = it->second;
-  }
+  for (const auto &entry : change)
+    for (int i = atom->map(static_cast<int>(entry.first)); i >= 0; i = atom->sametag[i])
+      type[i] = entry.second;
 }
 
 /* ----------------------------------------------------------------------

@@ -21,6 +21,7 @@ void BandSlices::reset(Side side, Platens platens, double h) {
   ylo_ = platens.ylo;
   const double span = platens.yhi - platens.ylo;
   h_ = (h > 0.0 && std::isfinite(h)) ? h : std::max(span, 1.0);
+  inv_h_ = 1.0 / h_;
   long n = (span > 0.0 && std::isfinite(span)) ? static_cast<long>(std::ceil(span / h_)) : 1;
   n = std::clamp(n, 1L, 1000000L);
   extent_.assign(static_cast<std::size_t>(n), empty_extent(side));
@@ -35,22 +36,12 @@ void BandSlices::finish() {
       near_[i] = side_ == Side::Right ? std::max(near_[i], extent_[k]) : std::min(near_[i], extent_[k]);
 }
 
-int BandSlices::slice_of(double y) const {
-  const double f = std::floor((y - ylo_) / h_);
-  const double last = static_cast<double>(extent_.size()) - 1.0;
-  if (!(f > 0.0)) return 0;  // also NaN
-  return static_cast<int>(std::min(f, last));
-}
 
 void BandSlices::add(double x, double y, double r) {
   if (extent_.empty()) return;
   add_in_slice(slice_of(y), x, r);
 }
 
-void BandSlices::add_in_slice(int slice, double x, double r) {
-  double& e = extent_[static_cast<std::size_t>(slice)];
-  e = side_ == Side::Right ? std::max(e, x + r) : std::min(e, x - r);
-}
 
 double BandSlices::outer_edge_near(double y) const {
   if (extent_.empty()) return empty_extent(side_);
@@ -67,21 +58,5 @@ bool BandSlices::contains(double x, double y, double r, double width) const {
   return contains_in_slice(slice_of(y), x, r, width);
 }
 
-bool BandSlices::contains_in_slice(int slice, double x, double r, double width) const {
-  double e;
-  if (near_.size() == extent_.size() && !near_.empty()) {
-    e = near_[static_cast<std::size_t>(slice)];
-  } else {
-    const double y_mid = ylo_ + (slice + 0.5) * h_;
-    e = outer_edge_near(y_mid);
-  }
-  // The disk itself bounds the edge, so an empty neighbourhood never rejects it.
-  if (side_ == Side::Right) {
-    e = std::max(e, x + r);
-    return x + r >= e - width;
-  }
-  e = std::min(e, x - r);
-  return x - r <= e + width;
-}
 
 }  // namespace membrane

@@ -8,7 +8,22 @@ namespace membrane {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+// Angles only need ordering, so a "diamond angle" (piecewise rational, monotone
+// in the true angle) replaces atan2: the walk calls it for every neighbour.
+constexpr double kFullTurn = 4.0;
+
+// Counter-clockwise angle of (x, y) from +x in (0, 4]; 4 stands for a full turn
+// (the direction of the back edge itself).
+double pseudo_angle(double x, double y) {
+  const double s = std::abs(x) + std::abs(y);
+  if (!(s > 0.0)) return kFullTurn;
+  double d;
+  if (y >= 0.0)
+    d = x >= 0.0 ? y / s : 1.0 - x / s;
+  else
+    d = x < 0.0 ? 2.0 - y / s : 3.0 + x / s;
+  return d > 0.0 ? d : kFullTurn;
+}
 
 bool finite_disk(const Disk& d) {
   return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.r);
@@ -137,14 +152,13 @@ int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int pre
     double ang;
     if (j == prev) {
       // Going back is the last resort (a dead end); set exactly so round-off
-      // in atan2 cannot rank it first.
-      ang = kTwoPi;
+      // cannot rank it first.
+      ang = kFullTurn;
     } else {
       const double vx = disks[j].x - p.x, vy = disks[j].y - p.y;
       double cr = bx * vy - by * vx;
       if (side == Side::Left) cr = -cr;  // clockwise on the Left = mirror image
-      ang = std::atan2(cr, bx * vx + by * vy);
-      if (ang <= 0.0) ang += kTwoPi;
+      ang = pseudo_angle(bx * vx + by * vy, cr);
     }
     if (best < 0 || ang < best_ang || (ang == best_ang && disks[j].tag < disks[best].tag)) {
       best = j;
@@ -299,6 +313,8 @@ void ChainFinder::bin_segments(const Polyline& pl, Platens platens, double bin_h
   nbin_ = static_cast<int>(nb);
   bin_h_ = span / nb;
   bin_start_.assign(nbin_ + 1, 0);
+  bin_xmin_.assign(nbin_, std::numeric_limits<double>::max());
+  bin_xmax_.assign(nbin_, std::numeric_limits<double>::lowest());
   for (int pass = 0; pass < 2; ++pass) {
     if (pass == 1) {
       for (int b = 0; b < nbin_; ++b) bin_start_[b + 1] += bin_start_[b];
@@ -309,10 +325,13 @@ void ChainFinder::bin_segments(const Polyline& pl, Platens platens, double bin_h
       const int b0 = bin_of(std::min(pl[k].y(), pl[k + 1].y()));
       const int b1 = bin_of(std::max(pl[k].y(), pl[k + 1].y()));
       for (int b = b0; b <= b1; ++b) {
-        if (pass == 0)
+        if (pass == 0) {
           ++bin_start_[b + 1];
-        else
+        } else {
           bin_items_[fill_[b]++] = static_cast<int>(k);
+          bin_xmin_[b] = std::min({bin_xmin_[b], pl[k].x(), pl[k + 1].x()});
+          bin_xmax_[b] = std::max({bin_xmax_[b], pl[k].x(), pl[k + 1].x()});
+        }
       }
     }
   }
@@ -327,6 +346,11 @@ int ChainFinder::bin_of(double y) const {
 
 bool ChainFinder::outside_binned(double x, double y, const Polyline& pl, Side side) const {
   const int b = bin_of(y);
+  // The polyline runs from ylo to yhi, so it crosses every height between an
+  // odd number of times: a disk inward of all of this slab's segments is inside.
+  if (bin_start_[b + 1] > bin_start_[b] &&
+      (side == Side::Right ? x < bin_xmin_[b] : x > bin_xmax_[b]))
+    return false;
   int crossings = 0;
   for (int k = bin_start_[b]; k < bin_start_[b + 1]; ++k) {
     const Eigen::Vector2d& a = pl[bin_items_[k]];

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -92,6 +94,7 @@ class ChainFinder {
   double rmax_ = 0.0;
   // Polyline segments by horizontal slab, for the escapee parity test.
   std::vector<int> bin_start_, bin_items_;
+  std::vector<double> bin_xmin_, bin_xmax_;  // x range of each slab's segments
   double bin_lo_ = 0.0, bin_h_ = 1.0;
   int nbin_ = 1;
 };
@@ -147,7 +150,14 @@ class BandSlices {
   void add(double x, double y, double r);
   std::vector<double>& extents() { return extent_; }
   const std::vector<double>& extents() const { return extent_; }
-  int slice_of(double y) const;  // clamped to [0, n-1]
+  // clamped to [0, n-1]; inline with the two below: they run for every local
+  // disk at every detection
+  int slice_of(double y) const {
+    const double f = std::floor((y - ylo_) * inv_h_);
+    const double last = static_cast<double>(extent_.size()) - 1.0;
+    if (!(f > 0.0)) return 0;  // also NaN
+    return static_cast<int>(std::min(f, last));
+  }
   // Optional, after the reduction: tabulates outer_edge_near per slice, so that
   // contains() costs one lookup per disk.
   void finish();
@@ -158,12 +168,25 @@ class BandSlices {
   bool contains(double x, double y, double r, double width) const;
   // The same with the slice of y already known (slice_of is the same for both
   // sides of one sample, so a caller computes it once per disk).
-  void add_in_slice(int slice, double x, double r);
-  bool contains_in_slice(int slice, double x, double r, double width) const;
+  void add_in_slice(int slice, double x, double r) {
+    double& e = extent_[static_cast<std::size_t>(slice)];
+    e = side_ == Side::Right ? std::max(e, x + r) : std::min(e, x - r);
+  }
+  bool contains_in_slice(int slice, double x, double r, double width) const {
+    // The disk itself bounds the edge, so an empty neighbourhood never rejects it.
+    const double e = edge_of_slice(slice);
+    if (side_ == Side::Right) return x + r >= std::max(e, x + r) - width;
+    return x - r <= std::min(e, x - r) + width;
+  }
 
  private:
+  double edge_of_slice(int slice) const {
+    if (near_.size() == extent_.size()) return near_[static_cast<std::size_t>(slice)];
+    return outer_edge_near(ylo_ + (slice + 0.5) * h_);
+  }
+
   Side side_ = Side::Right;
-  double ylo_ = 0.0, h_ = 1.0;
+  double ylo_ = 0.0, h_ = 1.0, inv_h_ = 1.0;
   std::vector<double> extent_;
   std::vector<double> near_;  // outer edge of each slice and its neighbours, after finish()
 };
