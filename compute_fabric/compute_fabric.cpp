@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
-#include <unordered_map>
+#include <cstdint>
 
 #include "atom.h"
 #include "comm.h"
@@ -301,17 +301,19 @@ void ComputeFabric::gather_contacts()
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
   const int ncontacts = static_cast<int>(recvbuf.size()) / CONTACT_FIELDS;
-  std::vector<int> order(ncontacts);
-  for (int c = 0; c < ncontacts; c++) order[c] = c;
+  // one 64-bit key per contact sorts faster than comparing doubles
+  sort_keys.resize(ncontacts);
   const double *buf = recvbuf.data();
-  std::sort(order.begin(), order.end(), [buf](int p, int q) {
-    const double *a = buf + p * CONTACT_FIELDS, *b = buf + q * CONTACT_FIELDS;
-    return a[TAG_A] < b[TAG_A] || (a[TAG_A] == b[TAG_A] && a[TAG_B] < b[TAG_B]);
-  });
+  for (int c = 0; c < ncontacts; c++) {
+    const double *rec = buf + c * CONTACT_FIELDS;
+    const uint64_t key = (static_cast<uint64_t>(rec[TAG_A]) << 32) | static_cast<uint64_t>(rec[TAG_B]);
+    sort_keys[c] = {key, c};
+  }
+  std::sort(sort_keys.begin(), sort_keys.end());
 
   contact_list.resize(ncontacts);
   for (int c = 0; c < ncontacts; c++) {
-    const double *rec = buf + order[c] * CONTACT_FIELDS;
+    const double *rec = buf + sort_keys[c].second * CONTACT_FIELDS;
     fabric::Contact &k = contact_list[c];
     k.a = static_cast<long>(rec[TAG_A]);
     k.b = static_cast<long>(rec[TAG_B]);
@@ -329,6 +331,8 @@ void ComputeFabric::gather_contacts()
     k.ft = -fbx * k.ny + fby * k.nx;
   }
 
+  index_contact_ends();
+
   long nlocal_selected = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom_selected(i)) nlocal_selected++;
@@ -336,23 +340,41 @@ void ComputeFabric::gather_contacts()
 }
 
 /* ----------------------------------------------------------------------
-   contact count of every selected particle, in tag order; particles
-   without contacts count as zeros
+   the contact angles about each particle, grouped by tag (counting sort:
+   tags are at most natoms with an atom map, so this is O(contacts))
+------------------------------------------------------------------------- */
+
+void ComputeFabric::index_contact_ends()
+{
+  long maxtag = 0;
+  for (const fabric::Contact &k : contact_list) maxtag = std::max(maxtag, k.b);
+  end_start.assign(maxtag + 2, 0);
+  for (const fabric::Contact &k : contact_list) {
+    end_start[k.a + 1]++;
+    end_start[k.b + 1]++;
+  }
+  for (long t = 0; t <= maxtag; t++) end_start[t + 1] += end_start[t];
+  end_angle.resize(2 * contact_list.size());
+  fill.assign(end_start.begin(), end_start.end() - 1);
+  for (const fabric::Contact &k : contact_list) {
+    const double theta = std::atan2(k.ny, k.nx);
+    end_angle[fill[k.a]++] = theta;
+    end_angle[fill[k.b]++] = theta + M_PI;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   contact count of every selected particle; particles without contacts
+   count as zeros
 ------------------------------------------------------------------------- */
 
 std::vector<int> ComputeFabric::contacts_per_particle() const
 {
-  std::unordered_map<long, int> count;
-  count.reserve(2 * contact_list.size());
-  for (const fabric::Contact &k : contact_list) {
-    count[k.a]++;
-    count[k.b]++;
-  }
   std::vector<int> per_particle;
   per_particle.reserve(nparticles);
-  for (const auto &entry : count) per_particle.push_back(entry.second);
+  for (size_t t = 0; t + 1 < end_start.size(); t++)
+    if (end_start[t + 1] > end_start[t]) per_particle.push_back(end_start[t + 1] - end_start[t]);
   per_particle.resize(std::max<long>(nparticles, per_particle.size()), 0);
-  std::sort(per_particle.begin(), per_particle.end());
   return per_particle;
 }
 
@@ -372,25 +394,18 @@ double ComputeFabric::sample_area()
    with 0 or 1 contact count as 1 when 'rattlers yes')
 ------------------------------------------------------------------------- */
 
-double ComputeFabric::mean_stability_index() const
+double ComputeFabric::mean_stability_index()
 {
-  std::unordered_map<long, std::vector<double>> angles;
-  angles.reserve(2 * contact_list.size());
-  for (const fabric::Contact &k : contact_list) {
-    const double theta = std::atan2(k.ny, k.nx);
-    angles[k.a].push_back(theta);
-    angles[k.b].push_back(theta + M_PI);
-  }
-  // sum in tag order so the result does not depend on hashing
-  std::vector<std::pair<long, double>> values;
-  values.reserve(angles.size());
-  for (auto &entry : angles)
-    if (entry.second.size() >= 2)
-      values.emplace_back(entry.first, fabric::stability_index(entry.second));
-  std::sort(values.begin(), values.end());
+  // summed in tag order, so the same on any number of ranks
   double sum = 0.0;
-  for (const auto &v : values) sum += v.second;
-  long n = static_cast<long>(values.size());
+  long n = 0;
+  for (size_t t = 0; t + 1 < end_start.size(); t++) {
+    const int first = end_start[t], last = end_start[t + 1];
+    if (last - first < 2) continue;
+    angles.assign(end_angle.begin() + first, end_angle.begin() + last);
+    sum += fabric::stability_index(angles);
+    n++;
+  }
   if (rattlers_flag) {
     const long rattlers = nparticles - n;
     sum += static_cast<double>(rattlers);
@@ -479,18 +494,14 @@ void ComputeFabric::compute_peratom()
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++) array_atom[i][0] = array_atom[i][1] = 0.0;
 
-  std::vector<std::vector<double>> angles(nlocal);
-  for (const fabric::Contact &k : contact_list) {
-    const double theta = std::atan2(k.ny, k.nx);
-    const int ia = atom->map(static_cast<int>(k.a));
-    const int ib = atom->map(static_cast<int>(k.b));
-    if (ia >= 0 && ia < nlocal) angles[ia].push_back(theta);
-    if (ib >= 0 && ib < nlocal) angles[ib].push_back(theta + M_PI);
-  }
   for (int i = 0; i < nlocal; i++) {
     if (!atom_selected(i)) continue;
-    array_atom[i][0] = static_cast<double>(angles[i].size());
-    array_atom[i][1] = fabric::stability_index(angles[i]);
+    const size_t t = static_cast<size_t>(atom->tag[i]);
+    const int first = t + 1 < end_start.size() ? end_start[t] : 0;
+    const int last = t + 1 < end_start.size() ? end_start[t + 1] : 0;
+    angles.assign(end_angle.begin() + first, end_angle.begin() + last);
+    array_atom[i][0] = static_cast<double>(last - first);
+    array_atom[i][1] = fabric::stability_index(angles);
   }
 }
 

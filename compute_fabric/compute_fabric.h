@@ -15,6 +15,8 @@ ComputeStyle(fabric,ComputeFabric)
 #ifndef LMP_COMPUTE_FABRIC_H
 #define LMP_COMPUTE_FABRIC_H
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "compute.h"
@@ -59,6 +61,9 @@ class ComputeFabric : public Compute {
   bigint gathered_step;    // timestep of the contact list below
   std::vector<fabric::Contact> contact_list;   // all contacts, identical on every rank
   std::vector<double> sendbuf, recvbuf;
+  std::vector<std::pair<uint64_t, int>> sort_keys;
+  std::vector<int> end_start, fill;        // contact angles about each tag (CSR)
+  std::vector<double> end_angle, angles;
   std::vector<int> recvcounts, displs;
   long nparticles;         // particles in group (and region)
 
@@ -71,7 +76,8 @@ class ComputeFabric : public Compute {
   bool atom_selected(int i) const;
   double sample_area();
   std::vector<int> contacts_per_particle() const;
-  double mean_stability_index() const;
+  void index_contact_ends();
+  double mean_stability_index();
 };
 
 }
