@@ -383,7 +383,7 @@ void FixMembrane2d::detect_chains()
   for (int k = LEFT; k <= RIGHT; k++) {
     SideState &s = sides[k];
     if (!s.active) continue;
-    finder.find(s.band, s.side, membrane::Platens{ylo, yhi}, tolerance, result);
+    find_chain(k);
     if (!result.ok) {
       failures++;
       if (s.chain_tags.empty())
@@ -418,6 +418,47 @@ void FixMembrane2d::detect_chains()
       switch_types(old_tags, s.chain_tags);
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   The chain search of a side runs on one rank and its result is broadcast:
+   with two or more ranks the left and right sides are searched at the same
+   time. Every rank holds the same band in the same order (allgather), so
+   indices into it identify the disks.
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::find_chain(int k)
+{
+  SideState &s = sides[k];
+  const int owner = (k == RIGHT && comm->nprocs > 1) ? 1 : 0;
+  if (comm->me == owner) {
+    finder.find(s.band, s.side, membrane::Platens{ylo, yhi}, tolerance, result);
+    result_buf.clear();
+    result_buf.push_back(result.ok ? 1 : 0);
+    result_buf.push_back(static_cast<int>(result.chain.size()));
+    result_buf.push_back(static_cast<int>(result.escaped.size()));
+    result_buf.push_back(static_cast<int>(result.failure.size()));
+    result_buf.push_back(result.pruned);
+    result_buf.insert(result_buf.end(), result.chain.begin(), result.chain.end());
+    result_buf.insert(result_buf.end(), result.escaped.begin(), result.escaped.end());
+    result_buf.insert(result_buf.end(), result.failure.begin(), result.failure.end());
+  }
+  if (comm->nprocs == 1) return;
+  int size = static_cast<int>(result_buf.size());
+  MPI_Bcast(&size, 1, MPI_INT, owner, world);
+  result_buf.resize(size);
+  MPI_Bcast(result_buf.data(), size, MPI_INT, owner, world);
+  if (comm->me == owner) return;
+  const int *b = result_buf.data();
+  result.ok = b[0] != 0;
+  const int nchain = b[1], nescaped = b[2], nfailure = b[3];
+  result.pruned = b[4];
+  b += 5;
+  result.chain.assign(b, b + nchain);
+  b += nchain;
+  result.escaped.assign(b, b + nescaped);
+  b += nescaped;
+  result.failure.assign(b, b + nfailure);
 }
 
 /* ----------------------------------------------------------------------

@@ -92,6 +92,7 @@ class FixMembrane2d : public Fix {
   SideState sides[2];      // LEFT, RIGHT
   membrane::ChainFinder finder;
   membrane::ChainResult result;
+  std::vector<int> result_buf;         // a side's chain search, broadcast by the rank that ran it
   std::map<long, int> observed_type;   // chain tag -> its own (not frictionless) type
   std::vector<int> slice_of_atom;      // band slice of each local disk
   std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
@@ -114,6 +115,7 @@ class FixMembrane2d : public Fix {
   void allgather(int nper);
   void gather_bands();
   void detect_chains();
+  void find_chain(int side);
   void switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags);
   void gather_chain_positions(SideState &s);
   void apply_forces();
