@@ -48,7 +48,7 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
   rattlers_flag(false), histogram_flag(false), stress_flag(false),
   area_value(0.0), area_varname(nullptr), area_ivar(-1),
   idregion(nullptr), iregion(-1),
-  id_contacts(nullptr), contacts(nullptr),
+  walls_flag(false),
   gathered_step(-1), nparticles(0), nmax_atom(0)
 {
   if (domain->dimension != 2)
@@ -109,13 +109,14 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
       else if (strcmp(value, "tensor") == 0) estimator = Estimator::Tensor;
       else error->all(FLERR, "Illegal compute fabric command: 'estimator' must be unbiased, published or tensor");
     } else if (strcmp(key, "stability") == 0 || strcmp(key, "rattlers") == 0 ||
-               strcmp(key, "histogram") == 0) {
+               strcmp(key, "histogram") == 0 || strcmp(key, "walls") == 0) {
       if (!is_yes_no(value))
         error->all(FLERR, (std::string("Illegal compute fabric command: '") + key +
                            "' must be yes or no").c_str());
       const bool on = strcmp(value, "yes") == 0;
       if (key[0] == 's') stability_flag = on;
       else if (key[0] == 'r') rattlers_flag = on;
+      else if (key[0] == 'w') walls_flag = on;
       else histogram_flag = on;
     } else if (strcmp(key, "stress") == 0) {
       stress_flag = true;
@@ -150,7 +151,8 @@ ComputeFabric::~ComputeFabric()
   memory->destroy(array_atom);
   delete[] area_varname;
   delete[] idregion;
-  delete[] id_contacts;
+  delete[] pairs.id;
+  delete[] walls.id;
 }
 
 /* ----------------------------------------------------------------------
@@ -162,41 +164,40 @@ ComputeFabric::~ComputeFabric()
    first init, when every compute of the input script exists.
 ------------------------------------------------------------------------- */
 
-void ComputeFabric::find_contacts_compute()
+void ComputeFabric::find_source(ContactSource &src)
 {
-  contacts = nullptr;
+  src.compute = nullptr;
   for (int i = 0; i < modify->ncompute; i++) {
     Compute *c = modify->compute[i];
-    if (c == this || strcmp(c->style, "pair/gran/local") != 0) continue;
-    if (id_contacts && strcmp(c->id, id_contacts) != 0) continue;
+    if (c == this || strcmp(c->style, src.style) != 0) continue;
+    if (src.id && strcmp(c->id, src.id) != 0) continue;
     ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
     if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id +
-                         " (pair/gran/local) must include the values 'pos id force' "
-                         "for compute fabric to read it").c_str());
+      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id + " (" + src.style +
+                         ") must include the values 'pos id force' for compute fabric to read it").c_str());
     if (c->igroup != 0 && c->igroup != igroup)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id +
-                         " (pair/gran/local) must use group all or the group of compute fabric").c_str());
-    contacts = found;
-    if (!id_contacts) {
-      id_contacts = new char[strlen(c->id) + 1];
-      strcpy(id_contacts, c->id);
+      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id + " (" + src.style +
+                         ") must use group all or the group of compute fabric").c_str());
+    src.compute = found;
+    if (!src.id) {
+      src.id = new char[strlen(c->id) + 1];
+      strcpy(src.id, c->id);
     }
     return;
   }
 }
 
-void ComputeFabric::create_contacts_compute()
+void ComputeFabric::create_source(ContactSource &src, const char *suffix)
 {
-  std::string cid = std::string(id) + "_contacts";
-  delete[] id_contacts;
-  id_contacts = new char[cid.size() + 1];
-  strcpy(id_contacts, cid.c_str());
+  std::string cid = std::string(id) + suffix;
+  delete[] src.id;
+  src.id = new char[cid.size() + 1];
+  strcpy(src.id, cid.c_str());
 
   char *args[6];
-  args[0] = id_contacts;
+  args[0] = src.id;
   args[1] = group->names[igroup];
-  args[2] = (char *) "pair/gran/local";
+  args[2] = const_cast<char *>(src.style);
   args[3] = (char *) "pos";
   args[4] = (char *) "id";
   args[5] = (char *) "force";
@@ -209,18 +210,31 @@ void ComputeFabric::create_contacts_compute()
   update->ntimestep = 0;
   modify->add_compute(6, args);
   update->ntimestep = now;
-  contacts = static_cast<ComputePairGranLocal *>(modify->compute[modify->ncompute - 1]);
+  src.compute = static_cast<ComputePairGranLocal *>(modify->compute[modify->ncompute - 1]);
+}
+
+void ComputeFabric::init_source(ContactSource &src, const char *suffix)
+{
+  find_source(src);
+  if (!src.compute && src.id)
+    error->all(FLERR, (std::string("Compute fabric: compute ") + src.id + " (" + src.style +
+                       ") that it reads was deleted").c_str());
+  if (!src.compute) create_source(src, suffix);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void ComputeFabric::init()
 {
-  find_contacts_compute();
-  if (!contacts && id_contacts)
-    error->all(FLERR, (std::string("Compute fabric: compute ") + id_contacts +
-                       " (pair/gran/local) that it reads was deleted").c_str());
-  if (!contacts) create_contacts_compute();
+  init_source(pairs, "_contacts");
+  if (walls_flag) {
+    // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
+    // wall is recognised by the mesh fixes it needs)
+    if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
+      error->all(FLERR, "Compute fabric: 'walls yes' needs a fix wall/gran with mesh walls "
+                        "(LIGGGHTS reports no contact forces for primitive walls)");
+    init_source(walls, "_walls");
+  }
 
   if (idregion) {
     iregion = domain->find_region(idregion);
@@ -250,6 +264,54 @@ bool ComputeFabric::atom_selected(int i) const
 }
 
 /* ----------------------------------------------------------------------
+   one record per contact: tags (b = -1 for a wall), centres (for a wall,
+   b's position is the contact point), force on a
+------------------------------------------------------------------------- */
+
+void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
+{
+  ComputePairGranLocal *c = src.compute;
+  const int nrows = c->size_local_rows;
+  double **rows = c->get_data();
+  const int ox = c->offset_x1(), oid = c->offset_id1(), of = c->offset_f();
+  Region *region = iregion >= 0 ? domain->regions[iregion] : nullptr;
+
+  for (int r = 0; r < nrows; r++) {
+    const double *row = rows[r];
+    double rec[CONTACT_FIELDS];
+    if (wall) {
+      // wall/gran/local: pos = contact point, particle centre; id = mesh, triangle, tag
+      const double *cp = row + ox, *xp = row + ox + 3;
+      const int ip = atom->map(static_cast<int>(row[oid + 2]));
+      if (ip < 0 || !(atom->mask[ip] & groupbit)) continue;
+      if (region && !region->match(xp[0], xp[1], xp[2])) continue;
+      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0, xp[0], xp[1], cp[0], cp[1], row[of], row[of + 1]};
+      std::copy(w, w + CONTACT_FIELDS, rec);
+    } else {
+      const double *xa = row + ox, *xb = row + ox + 3;
+      // a pair/gran/local of group all (the user's) reports contacts outside our group
+      const int ia = atom->map(static_cast<int>(row[oid]));
+      const int ib = atom->map(static_cast<int>(row[oid + 1]));
+      if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit)) continue;
+      if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
+        continue;
+      const double p[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
+                                        row[of], row[of + 1]};
+      std::copy(p, p + CONTACT_FIELDS, rec);
+      if (rec[TAG_A] > rec[TAG_B]) {
+        // make a the smaller tag; the force on the new a is minus the old one
+        std::swap(rec[TAG_A], rec[TAG_B]);
+        std::swap(rec[XA], rec[XB]);
+        std::swap(rec[YA], rec[YB]);
+        rec[FAX] = -rec[FAX];
+        rec[FAY] = -rec[FAY];
+      }
+    }
+    sendbuf.insert(sendbuf.end(), rec, rec + CONTACT_FIELDS);
+  }
+}
+
+/* ----------------------------------------------------------------------
    Every rank ends with the same contact list, sorted by (tag a, tag b) with
    tag a < tag b, so every statistic is summed in the same order whatever the
    number of ranks. pair/gran/local already reports a contact across a
@@ -261,41 +323,19 @@ void ComputeFabric::gather_contacts()
   if (gathered_step == update->ntimestep) return;
   gathered_step = update->ntimestep;
 
-  if (contacts->invoked_local != update->ntimestep) {
-    // Ghost velocities date from the start of the step; the contact model's
-    // damping terms need the current ones, or a contact across a processor
-    // boundary would differ from the same contact inside one rank.
-    comm->forward_comm();
-    contacts->compute_local();
-  }
-
-  const int nrows = contacts->size_local_rows;
-  double **rows = contacts->get_data();
-  const int ox = contacts->offset_x1(), oid = contacts->offset_id1(), of = contacts->offset_f();
-  const bool use_region = iregion >= 0;
-  Region *region = use_region ? domain->regions[iregion] : nullptr;
-
+  // Ghost velocities date from the start of the step; the contact model's
+  // damping terms need the current ones, or a contact across a processor
+  // boundary would differ from the same contact inside one rank.
+  bool refreshed = false;
   sendbuf.clear();
-  for (int r = 0; r < nrows; r++) {
-    const double *row = rows[r];
-    const double *xa = row + ox, *xb = row + ox + 3;
-    // a pair/gran/local of group all (the user's) reports contacts outside our group
-    const int ia = atom->map(static_cast<int>(row[oid]));
-    const int ib = atom->map(static_cast<int>(row[oid + 1]));
-    if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit)) continue;
-    if (use_region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
-      continue;
-    double rec[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
-                                  row[of], row[of + 1]};
-    if (rec[TAG_A] > rec[TAG_B]) {
-      // make a the smaller tag; the force on the new a is minus the old one
-      std::swap(rec[TAG_A], rec[TAG_B]);
-      std::swap(rec[XA], rec[XB]);
-      std::swap(rec[YA], rec[YB]);
-      rec[FAX] = -rec[FAX];
-      rec[FAY] = -rec[FAY];
+  for (ContactSource *src : {&pairs, &walls}) {
+    if (!src->compute) continue;
+    if (src->compute->invoked_local != update->ntimestep) {
+      if (!refreshed) comm->forward_comm();
+      refreshed = true;
+      src->compute->compute_local();
     }
-    sendbuf.insert(sendbuf.end(), rec, rec + CONTACT_FIELDS);
+    pack_contacts(*src, src == &walls);
   }
 
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
@@ -306,7 +346,9 @@ void ComputeFabric::gather_contacts()
   const double *buf = recvbuf.data();
   for (int c = 0; c < ncontacts; c++) {
     const double *rec = buf + c * CONTACT_FIELDS;
-    const uint64_t key = (static_cast<uint64_t>(rec[TAG_A]) << 32) | static_cast<uint64_t>(rec[TAG_B]);
+    // a wall (tag -1) sorts after the particles a touches
+    const uint64_t low = static_cast<uint32_t>(static_cast<int64_t>(rec[TAG_B]));
+    const uint64_t key = (static_cast<uint64_t>(rec[TAG_A]) << 32) | low;
     sort_keys[c] = {key, c};
   }
   std::sort(sort_keys.begin(), sort_keys.end());
@@ -347,19 +389,19 @@ void ComputeFabric::gather_contacts()
 void ComputeFabric::index_contact_ends()
 {
   long maxtag = 0;
-  for (const fabric::Contact &k : contact_list) maxtag = std::max(maxtag, k.b);
+  for (const fabric::Contact &k : contact_list) maxtag = std::max({maxtag, k.a, k.b});
   end_start.assign(maxtag + 2, 0);
   for (const fabric::Contact &k : contact_list) {
     end_start[k.a + 1]++;
-    end_start[k.b + 1]++;
+    if (k.b >= 0) end_start[k.b + 1]++;
   }
   for (long t = 0; t <= maxtag; t++) end_start[t + 1] += end_start[t];
-  end_angle.resize(2 * contact_list.size());
+  end_angle.resize(end_start[maxtag + 1]);
   fill.assign(end_start.begin(), end_start.end() - 1);
   for (const fabric::Contact &k : contact_list) {
     const double theta = std::atan2(k.ny, k.nx);
     end_angle[fill[k.a]++] = theta;
-    end_angle[fill[k.b]++] = theta + M_PI;
+    if (k.b >= 0) end_angle[fill[k.b]++] = theta + M_PI;
   }
 }
 

@@ -55,8 +55,15 @@ class ComputeFabric : public Compute {
   char *idregion;
   int iregion;
 
-  char *id_contacts;       // compute pair/gran/local that reports contact forces
-  class ComputePairGranLocal *contacts;
+  // LIGGGHTS' computes that report contact forces: pair/gran/local for
+  // particle-particle, wall/gran/local for particle-(mesh) wall contacts
+  struct ContactSource {
+    const char *style;
+    char *id = nullptr;    // the user's compute, or ours (ID_contacts, ID_walls)
+    class ComputePairGranLocal *compute = nullptr;
+  };
+  ContactSource pairs{"pair/gran/local"}, walls{"wall/gran/local"};
+  bool walls_flag;         // count particle-wall contacts
 
   bigint gathered_step;    // timestep of the contact list below
   std::vector<fabric::Contact> contact_list;   // all contacts, identical on every rank
@@ -70,8 +77,10 @@ class ComputeFabric : public Compute {
   int nmax_atom;
 
   void parse_args(int iarg, int narg, char **arg);
-  void find_contacts_compute();
-  void create_contacts_compute();
+  void find_source(ContactSource &src);
+  void create_source(ContactSource &src, const char *suffix);
+  void init_source(ContactSource &src, const char *suffix);
+  void pack_contacts(const ContactSource &src, bool wall);
   void gather_contacts();
   bool atom_selected(int i) const;
   double sample_area();
