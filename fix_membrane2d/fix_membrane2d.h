@@ -112,6 +112,7 @@ class FixMembrane2d : public Fix {
   void evaluate_platens();
   void check_platens();
   void compute_d50();
+  void check_time_step();
   void allgather(int nper);
   void gather_bands();
   void detect_chains();

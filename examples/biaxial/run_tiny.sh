@@ -4,7 +4,7 @@
 set -e
 cd "$(dirname "$0")"
 NP=${1:-1}
-LM=${LM:-../../build-app/app/liggghts-membrane}
+LM=${LM:-../../build/app/liggghts-membrane}
 case "$LM" in /*) ;; *) LM="$(pwd)/$LM" ;; esac
 mkdir -p tiny
 /usr/bin/python3 ../../scripts/generate_sample.py --scale 0.25 --seed 12345 --out tiny/sample.data

@@ -9,7 +9,8 @@ ranks. Checks physical sanity that a broken example would fail:
   line after the first; membrane: the applied pressure is 100 kPa and the
   Love-Weber sigma_xx inside the membrane within 15 % of it on average;
 - the stress ratio starts at 1 (+-0.1) and rises above 1.3;
-- the rigid and the membrane runs of the same sample differ.
+- the rigid and the membrane runs of the same sample differ;
+- the membrane's stability guard stays quiet at the example's time step.
 
     biaxial_small.py EXE NP
 """
@@ -87,6 +88,7 @@ def main():
                 mean = sum(lw) / len(lw)
                 check(abs(mean / 1e5 - 1) < 0.15,
                       "membrane: mean Love-Weber sigma_xx inside %.0f Pa within 15 %% of 100 kPa" % mean)
+                check("may go unstable" not in out, "membrane: no time-step warning at the example's dt")
                 esc = [l for l in out.splitlines() if l.startswith("SHEAR done")]
                 check(bool(esc) and "chain failures 0" in esc[0], "membrane: no chain failure")
         n = min(len(runs["rigid"]["s1"]), len(runs["membrane"]["s1"]))

@@ -6,6 +6,8 @@ The script states its own expectations in comment lines starting with '#@':
   #@ expect NAME VALUE TOL         RESULT NAME must equal VALUE within TOL (absolute)
   #@ expect NAME VALUE rel TOL      ... within TOL relative
   #@ expect NAME > VALUE           ... (also <) a bound
+  #@ output TEXT                   the output must contain TEXT (e.g. a warning)
+  #@ no-output TEXT                the output must not contain TEXT
   #@ error SUBSTRING ::: COMMAND    replace the line '#@ case' by COMMAND: the run must
                                    fail with SUBSTRING in its output (one line per case;
                                    a literal \n in COMMAND starts a new input line)
@@ -55,6 +57,14 @@ def check_expectations(dirs, output, label):
     vals = results(output)
     failures = []
     for d in dirs:
+        for key, must in (("output ", True), ("no-output ", False)):
+            if d.startswith(key):
+                text = d[len(key):].strip()
+                ok = (text in output) == must
+                print("%s %s %s '%s'" % ("ok  " if ok else "FAIL", label,
+                                         "output has" if must else "output lacks", text))
+                if not ok:
+                    failures.append("%s: output %s '%s'" % (label, "lacks" if must else "has", text))
         w = d.split()
         if not w or w[0] != "expect":
             continue
@@ -148,7 +158,7 @@ def main():
                 failures.append("run failed (rc=%d):\n%s" % (rc, out[-3000:]))
             else:
                 failures += check_expectations(dirs, out, "np=%d" % a.np)
-                if not any(d.startswith("expect ") for d in dirs):
+                if not any(d.startswith(("expect ", "output ")) for d in dirs):
                     failures.append("script has no '#@ expect' lines")
     for f in failures:
         print("FAIL", f)
