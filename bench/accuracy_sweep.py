@@ -1,0 +1,715 @@
+#!/usr/bin/python3
+"""Run time against error of the 2D DEM biaxial test (examples/biaxial).
+
+    /usr/bin/python3 bench/accuracy_sweep.py [--scale 0.5] [--strain 0.05] [--jobs 2]
+        [--rates 0.00125,0.0025,0.005,0.01,0.02,0.04,0.08] [--everys 1,2,5,10,50]
+        [--dts 1e-4,5e-5,2e-4,4e-4,8e-4] [--seeds 12345,54321] [--workdir out/accuracy_sweep]
+
+One command: generates and prepares (examples/biaxial/in.prepare) one sample per
+seed, shears it (in.shear_rigid / in.shear_membrane) on ONE MPI rank per run, at
+most --jobs runs at a time, and compares every run with the reference run of its
+sweep:
+
+  rate   both cases, -var rate R; reference = the slowest rate of --rates
+  every  membrane, -var every N at --default-rate; reference = the smallest N
+  dt     rigid, -var dt DT at --default-rate; reference = --default-dt
+  seed   the reference (slowest rate) of both cases repeated on the second seed:
+         the sample-to-sample scatter; an error below it is noise
+
+Errors over 0..final strain on a common eps_11 grid: RMS and max difference of
+s1/s3 and eps_v; peak s1/s3 and its strain, E, phi, psi (scripts/biaxial/curves.py);
+RMS difference of the fabric a, C_n and mean lambda (gsi). Wall time = the sum of
+the 'Loop time' lines of the run's log. The output interval is set to a fixed
+strain (--dstrain-out, the examples' 500 steps at rate 0.01, dt 1e-4), so every run
+has the same curve resolution and the same number of fabric evaluations.
+
+Writes bench/accuracy_sweep.csv (raw numbers), bench/accuracy_sweep.png (wall
+time vs RMS error of s1/s3 with the scatter level and the Pareto front) and
+bench/accuracy_sweep.md (the table), and prints the table. Runs already finished
+in --workdir (same parameters) are reused: the command can be re-run to resume.
+The executable is copied into --workdir at the start, so a rebuild by someone
+else does not change it in the middle of the sweep.
+"""
+import argparse
+import concurrent.futures as cf
+import csv
+import hashlib
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+
+from biaxial import curves, readers  # noqa: E402
+from biaxial.curves import measured  # noqa: E402
+
+EXAMPLES = os.path.join(ROOT, "examples", "biaxial")
+PUBLISHED_RATE = 0.02 / 60.0          # 2 %/min
+LOCK = threading.Lock()
+
+
+def log(msg):
+    with LOCK:
+        print(msg, flush=True)
+
+
+def floats(text):
+    return [float(w) for w in text.split(",") if w.strip()]
+
+
+def ints(text):
+    return [int(w) for w in text.split(",") if w.strip()]
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[1],
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--scale", type=float, default=0.5,
+                   help="sample size factor of generate_sample.py (0.5: ~2100 disks; 1: published)")
+    p.add_argument("--strain", type=float, default=0.05, help="final axial strain (0.05)")
+    p.add_argument("--rates", type=floats, default=floats("0.00125,0.0025,0.005,0.01,0.02,0.04,0.08"),
+                   help="loading rates [1/s]; the slowest is the reference")
+    p.add_argument("--everys", type=ints, default=ints("1,2,5,10,50"),
+                   help="membrane chain re-detection intervals; the smallest is the reference")
+    p.add_argument("--dts", type=floats, default=floats("1e-4,5e-5,2e-4,4e-4,8e-4"),
+                   help="time steps of the rigid case (reference = --default-dt)")
+    p.add_argument("--default-rate", type=float, default=0.01,
+                   help="rate of the 'every' and 'dt' sweeps (the examples' default)")
+    p.add_argument("--default-dt", type=float, default=1e-4)
+    p.add_argument("--seeds", type=ints, default=ints("12345,54321"),
+                   help="sample seeds: the first for all sweeps, the second for the scatter")
+    p.add_argument("--scatter-rates", type=floats, default=floats("0.0025,0.01"),
+                   help="extra rates at which the two seeds are also compared (the scatter at "
+                        "the reference rate is the one used; these check that it does not "
+                        "depend on the rate)")
+    p.add_argument("--sweeps", default="rate,every,dt,seed",
+                   help="which sweeps to run (comma list of rate, every, dt, seed)")
+    p.add_argument("--jobs", type=int, default=2, help="runs at a time, 1 rank each (2)")
+    p.add_argument("--dstrain-out", type=float, default=5e-4,
+                   help="axial strain between output lines (5e-4)")
+    p.add_argument("--grid", type=int, default=401, help="points of the common eps_11 grid")
+    p.add_argument("--workdir", default=os.path.join(ROOT, "out", "accuracy_sweep"),
+                   help="where the samples and runs go (out/ is git-ignored)")
+    p.add_argument("--exe", default=os.path.join(ROOT, "build", "app", "liggghts-membrane"))
+    p.add_argument("--prefix", default=os.path.join(HERE, "accuracy_sweep"),
+                   help="output prefix: PREFIX.csv, PREFIX.png, PREFIX.md")
+    p.add_argument("--time-axis", choices=("cpu", "wall"), default="cpu",
+                   help="x axis of the plot and of the Pareto front: CPU time of the run "
+                        "(user+sys; robust when others load the machine, default) or wall "
+                        "time (the 'Loop time' sum); the table gives both")
+    p.add_argument("--retry-failed", action="store_true", help="re-run runs recorded as failed")
+    p.add_argument("--report-only", action="store_true", help="no runs: report what is there")
+    a = p.parse_args(argv)
+    if a.jobs < 1:
+        p.error("--jobs >= 1")
+    a.sweeps = [s.strip() for s in a.sweeps.split(",") if s.strip()]
+    return a
+
+
+# ----------------------------------------------------------------------------- runs
+def sha(path):
+    return hashlib.sha256(open(path, "rb").read()).hexdigest()[:12]
+
+
+def tag(x):
+    return f"{x:g}"
+
+
+class Run:
+    """One shear run: parameters, files and (after it ran) its measurements."""
+
+    def __init__(self, case, seed, rate, dt, every, args):
+        self.case, self.seed, self.rate, self.dt, self.every = case, seed, rate, dt, every
+        self.nsteps = int(math.ceil(args.strain / (rate * dt)))
+        self.nout = max(1, int(round(args.dstrain_out / (rate * dt))))
+        self.ndump = 10 * self.nout
+        self.name = f"{case}_seed{seed}_rate{tag(rate)}_dt{tag(dt)}" + \
+            (f"_every{every}" if case == "membrane" else "")
+        self.dir = os.path.join(args.rundir, self.name)
+        self.out = os.path.join(self.dir, "shear.txt")
+        self.script = args.scripts[case]
+        self.params = dict(case=case, seed=seed, rate=rate, dt=dt, every=every,
+                           strain=args.strain, scale=args.scale, nout=self.nout,
+                           script_sha=args.script_sha[case], exe_sha=args.exe_sha)
+        self.meta = None
+        self.table = None
+        self.curves = None
+
+    @property
+    def key(self):
+        return (self.case, self.seed, self.rate, self.dt, self.every)
+
+    def cost(self):
+        return self.nsteps * (1.3 if self.case == "membrane" else 1.0)
+
+
+def run_command(cmd, cwd, screen, timeout):
+    """(return code or 'timeout', wall [s], CPU time user+sys [s]) of one process."""
+    t0 = time.time()
+    with open(screen, "w") as f:
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT,
+                             env=dict(os.environ, OMP_NUM_THREADS="1"))
+        timed_out = []
+        timer = threading.Timer(timeout, lambda: (timed_out.append(1), p.kill()))
+        timer.start()
+        _, status, ru = os.wait4(p.pid, 0)     # per-child rusage: CPU time despite other load
+        timer.cancel()
+        p.returncode = rc = os.waitstatus_to_exitcode(status)
+    return ("timeout" if timed_out else rc), time.time() - t0, ru.ru_utime + ru.ru_stime
+
+
+def loop_times(logfile):
+    """(sum of Loop times [s], sum of steps) over the log's runs."""
+    tsum, nsum = 0.0, 0
+    if os.path.exists(logfile):
+        for line in open(logfile, errors="replace"):
+            m = re.match(r"Loop time of ([-+.\deE]+) on (\d+) procs for (\d+) steps", line)
+            if m:
+                tsum += float(m.group(1))
+                nsum += int(m.group(3))
+    return tsum, nsum
+
+
+def symptom(screen):
+    """The first ERROR/WARNING-of-note line, else the last non-empty line."""
+    lines = [l.strip() for l in open(screen, errors="replace")] if os.path.exists(screen) else []
+    for l in lines:
+        if "ERROR" in l:
+            return l[:200]
+    for l in lines:
+        if "Lost atoms" in l or "nan" in l.lower().split():
+            return l[:200]
+    nonempty = [l for l in lines if l]
+    return nonempty[-1][:200] if nonempty else "no output"
+
+
+def execute(run, args, restart):
+    """Run (or reuse) one shear run; fills run.meta."""
+    metafile = os.path.join(run.dir, "meta.json")
+    if os.path.exists(metafile):
+        meta = json.load(open(metafile))
+        if meta.get("params") == run.params and (meta["status"] == "ok" or not args.retry_failed):
+            run.meta = meta
+            return run
+    if args.report_only:
+        run.meta = dict(params=run.params, status="not run", symptom="not run")
+        return run
+    os.makedirs(run.dir, exist_ok=True)
+    for f in os.listdir(run.dir):
+        os.remove(os.path.join(run.dir, f))
+    cmd = [args.exe_copy, "-in", run.script,
+           "-var", "restart", restart, "-var", "meshdir", os.path.join(EXAMPLES, "meshes"),
+           "-var", "rate", repr(run.rate), "-var", "dt", repr(run.dt),
+           "-var", "eatarget", repr(args.strain), "-var", "nout", str(run.nout),
+           "-var", "ndump", str(run.ndump), "-var", "out", run.out, "-log", "log.shear"]
+    if run.case == "membrane":
+        cmd += ["-var", "every", str(run.every)]
+    timeout = 600 + run.nsteps * 0.02        # 20 ms/step: far above the expected ~1 ms
+    log(f"  start {run.name}: {run.nsteps} steps, output every {run.nout}")
+    screen = os.path.join(run.dir, "screen.txt")
+    rc, wall, cpu = run_command(cmd, run.dir, screen, timeout)
+    tloop, nsteps = loop_times(os.path.join(run.dir, "log.shear"))
+    text = open(screen, errors="replace").read()
+    done = [l for l in text.splitlines() if l.startswith("SHEAR done")]
+    meta = dict(params=run.params, rc=rc, process_wall_s=wall, cpu_s=cpu, loop_time_s=tloop,
+                steps=nsteps, done_line=done[-1] if done else "", cmd=" ".join(cmd))
+    if rc == 0 and done:
+        meta["status"], meta["symptom"] = "ok", ""
+    else:
+        meta["status"] = "failed"
+        meta["symptom"] = ("timeout after %.0f s: " % wall if rc == "timeout" else f"rc {rc}: ") \
+            + symptom(screen)
+    m = re.search(r"escaped (\S+) chain failures (\S+)", meta["done_line"])
+    if m:
+        meta["escaped"], meta["chain_failures"] = float(m.group(1)), float(m.group(2))
+    json.dump(meta, open(metafile, "w"), indent=1)
+    meta["executed_now"] = True
+    run.meta = meta
+    log(f"  end   {run.name}: {meta['status']}, loop time {tloop:.1f} s"
+        + (f" ({meta['symptom']})" if meta["symptom"] else ""))
+    return run
+
+
+def prepare(seed, args):
+    """Generate and prepare the sample of one seed (reused when present)."""
+    base = os.path.join(args.sampledir, f"prepared_{seed}.restart")
+    if os.path.exists(base) and os.path.exists(base + ".walls"):
+        return base
+    if args.report_only:
+        raise SystemExit(f"no prepared sample {base}")
+    data = os.path.join(args.sampledir, f"sample_{seed}.data")
+    subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "generate_sample.py"),
+                    "--scale", repr(args.scale), "--seed", str(seed), "--out", data], check=True)
+    log(f"  prepare seed {seed}")
+    screen = os.path.join(args.sampledir, f"screen.prepare_{seed}")
+    rc, wall, _ = run_command([args.exe_copy, "-in", os.path.join(EXAMPLES, "in.prepare"),
+                            "-var", "data", data, "-var", "out", base,
+                            "-var", "meshdir", os.path.join(EXAMPLES, "meshes"),
+                            "-log", os.path.join(args.sampledir, f"log.prepare_{seed}")],
+                           args.sampledir, screen, 7200)
+    ok = [l for l in open(screen) if l.startswith("PREPARED porosity")]
+    if rc != 0 or not ok:
+        raise SystemExit(f"in.prepare failed for seed {seed} (rc {rc}): {symptom(screen)}")
+    log(f"  prepared seed {seed} in {wall:.0f} s: {ok[0].strip()}")
+    return base
+
+
+# ----------------------------------------------------------------------------- analysis
+def load(run):
+    """Read the table and the curve analysis of a finished run; flags blow-ups."""
+    if run.meta["status"] != "ok" or not os.path.exists(run.out):
+        return
+    try:
+        run.table = readers.read_output(run.out)
+        run.curves = curves.analyse_curves(run.table)
+    except Exception as e:   # noqa: BLE001  (a broken table is a failed run)
+        run.meta["status"], run.meta["symptom"] = "failed", f"unreadable output: {e}"
+        run.table = None
+        return
+    r = run.table["s1/s3"]
+    ea = run.table["ea"]
+    if not np.all(np.isfinite(r)) or np.nanmax(np.abs(r)) > 50 or np.any(np.diff(ea) < -1e-6):
+        run.meta["status"] = "unstable"
+        bad = np.nonzero(~np.isfinite(r) | (np.abs(r) > 50))[0]
+        at = f"from eps_11 = {100 * ea[bad[0]]:.2f} % on, " if len(bad) else ""
+        run.meta["symptom"] = (f"blew up {at}s1/s3 up to {np.nanmax(np.abs(r)):.3g}, "
+                               f"KE up to {np.nanmax(run.table['KE']):.3g} J; LIGGGHTS "
+                               f"ran on without an error")
+
+
+def num(x):
+    return float(x) if x is not None and measured(x) else float("nan")
+
+
+def compare(run, ref, args):
+    """Errors of run against ref on the common eps_11 grid (dict)."""
+    e = {}
+    if run.table is None or ref.table is None:
+        return e
+    a, b = run.table, ref.table
+    top = min(a["ea"][-1], b["ea"][-1], args.strain)
+    g = np.linspace(0.0, top, args.grid)
+
+    def diff(col):
+        if not (a.has(col) and b.has(col)):
+            return None
+        return np.interp(g, a["ea"], a[col]) - np.interp(g, b["ea"], b[col])
+
+    for col, k in (("s1/s3", "ratio"), ("ev", "ev"), ("a", "a"), ("C_n", "Cn"), ("gsi", "gsi")):
+        d = diff(col)
+        e[f"rms_{k}"] = float(np.sqrt(np.mean(d ** 2))) if d is not None else float("nan")
+        e[f"max_{k}"] = float(np.max(np.abs(d))) if d is not None else float("nan")
+        if k == "ratio":
+            e["mean_ratio"] = float(np.mean(d)) if d is not None else float("nan")
+    ca, cb = run.curves, ref.curves
+    e["d_peak"] = num(ca["peak_ratio"]) - num(cb["peak_ratio"])
+    e["d_ea_peak"] = num(ca["ea_peak"]) - num(cb["ea_peak"])
+    e["dE_rel"] = num(ca["E"]) / num(cb["E"]) - 1.0
+    e["d_phi"] = num(ca["phi_peak"]) - num(cb["phi_peak"])
+    e["d_psi"] = num(ca["psi"]) - num(cb["psi"])
+    e["ea_compared"] = float(top)
+    return e
+
+
+def row_for(sweep, run, ref, ref0, args):
+    m = run.meta
+    c = run.curves or {}
+    row = dict(sweep=sweep, case=run.case, seed=run.seed, rate=run.rate, dt=run.dt,
+               every=run.every if run.case == "membrane" else "", reference=ref.name,
+               is_reference=int(run is ref), status=m["status"], symptom=m.get("symptom", ""),
+               steps=m.get("steps", ""), wall_s=m.get("loop_time_s", float("nan")),
+               cpu_s=m.get("cpu_s", float("nan")),
+               ms_per_step=(1e3 * m["loop_time_s"] / m["steps"]) if m.get("steps") else float("nan"),
+               I_max=num(c.get("I_max")), escaped=m.get("escaped", ""),
+               chain_failures=m.get("chain_failures", ""),
+               peak_ratio=num(c.get("peak_ratio")), ea_peak=num(c.get("ea_peak")),
+               E=num(c.get("E")), phi=num(c.get("phi_peak")), psi=num(c.get("psi")))
+    row.update(compare(run, ref, args))
+    row["rms_ratio_vs_case_ref"] = compare(run, ref0, args).get("rms_ratio", float("nan"))
+    for k in ERR_KEYS + ["mean_ratio", "max_a", "max_Cn", "max_gsi", "ea_compared"]:
+        row.setdefault(k, float("nan"))
+    return row
+
+
+# ----------------------------------------------------------------------------- output
+ERR_KEYS = ["rms_ratio", "max_ratio", "rms_ev", "max_ev", "d_peak", "d_ea_peak", "dE_rel",
+            "d_phi", "d_psi", "rms_a", "rms_Cn", "rms_gsi"]
+# what "within the sample scatter" means (|error| <= |scatter| for each of these)
+GATE_KEYS = ["rms_ratio", "rms_ev", "d_peak"]
+CSV_KEYS = ["sweep", "case", "seed", "rate", "dt", "every", "reference", "is_reference", "status",
+            "symptom", "steps", "wall_s", "cpu_s", "ms_per_step", "I_max", "escaped", "chain_failures",
+            "peak_ratio", "ea_peak", "E", "phi", "psi"] + ERR_KEYS + \
+           ["mean_ratio", "max_a", "max_Cn", "max_gsi", "ea_compared", "rms_ratio_vs_case_ref",
+            "within_scatter"]
+
+
+def within(row, scatter):
+    """'' when every GATE_KEYS error is within the scatter, else the keys that exceed it."""
+    if scatter is None or row["status"] != "ok":
+        return "n/a"
+    over = [k for k in GATE_KEYS if abs(row.get(k, np.nan)) > abs(scatter.get(k, np.nan))
+            or not np.isfinite(row.get(k, np.nan))]
+    return "yes" if not over else "no: " + " ".join(over)
+
+
+def sweep_of(row):
+    """The sweeps whose rows are judged against the scatter (not the scatter rows)."""
+    return row["sweep"] if row["sweep"] in ("rate", "every", "dt", "rate@seed2") else None
+
+
+def pareto(points):
+    """Indices of the Pareto front of (time, error) points (both minimised)."""
+    order = sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1]))
+    front, best = [], float("inf")
+    for i in order:
+        if points[i][1] < best:
+            front.append(i)
+            best = points[i][1]
+    return front
+
+
+def fmt(x, spec="{:.3g}", scale=1.0):
+    if x == "" or x is None:
+        return ""
+    try:
+        x = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    return "—" if not np.isfinite(x) else spec.format(x * scale)
+
+
+def setting(row):
+    if row["sweep"] == "every":
+        return f"every {row['every']}"
+    if row["sweep"] == "dt":
+        return f"dt {row['dt']:g} s"
+    if row["sweep"] == "scatter":
+        return "pooled: RMS over the seed rows"
+    if row["sweep"] == "rate@seed2":
+        return f"rate {row['rate']:g} /s, seed {row['seed']}"
+    if row["sweep"].startswith("seed"):
+        return f"seed {row['seed']} (rate {row['rate']:g})"
+    return f"rate {row['rate']:g} /s"
+
+
+def markdown_table(rows):
+    head = ["sweep", "case", "setting", "status", "steps", "wall [s]", "CPU [s]", "I_max",
+            "RMS Δ(σ1/σ3)", "max Δ(σ1/σ3)", "mean Δ(σ1/σ3)", "RMS Δε_v [%]", "max Δε_v [%]", "Δpeak σ1/σ3",
+            "Δε_peak [%]", "ΔE [%]", "Δφ [°]", "Δψ [°]", "RMS Δa", "RMS ΔC_n", "RMS Δλ",
+            "RMS Δ(σ1/σ3) vs case ref", "within scatter"]
+    out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in rows:
+        ref = r["is_reference"]
+        errs = [""] * 15 if ref else [
+            fmt(r.get("rms_ratio")), fmt(r.get("max_ratio")), fmt(r.get("mean_ratio"), "{:+.3g}"), fmt(r.get("rms_ev"), scale=100),
+            fmt(r.get("max_ev"), scale=100), fmt(r.get("d_peak"), "{:+.3g}"),
+            fmt(r.get("d_ea_peak"), "{:+.2g}", 100), fmt(r.get("dE_rel"), "{:+.2g}", 100),
+            fmt(r.get("d_phi"), "{:+.2f}"), fmt(r.get("d_psi"), "{:+.2f}"), fmt(r.get("rms_a")),
+            fmt(r.get("rms_Cn")), fmt(r.get("rms_gsi")), fmt(r.get("rms_ratio_vs_case_ref")),
+            r.get("within_scatter", "")]
+        if r["status"] != "ok":            # no error of a failed run is meaningful
+            errs = ["—"] * len(errs)
+        if r["sweep"] == "scatter":       # magnitudes (RMS over the seed pairs), no sign
+            errs = [e.lstrip("+") for e in errs]
+        status = r["status"] + (f" ({r['symptom']})" if r["status"] != "ok" else "")
+        if r["case"] == "membrane" and r["status"] == "ok" and (r["escaped"] or r["chain_failures"]):
+            status += f" (escaped {r['escaped']:g}, chain failures {r['chain_failures']:g})"
+        out.append("| " + " | ".join([r["sweep"], r["case"], setting(r) + (" **ref**" if ref else ""),
+                                      status, str(r["steps"]), fmt(r["wall_s"], "{:.1f}"),
+                                      fmt(r["cpu_s"], "{:.1f}"),
+                                      fmt(r["I_max"], "{:.2g}")] + errs) + " |")
+    return "\n".join(out)
+
+
+def plot(rows, scatter, path, tkey):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    cases = [c for c in ("rigid", "membrane") if any(r["case"] == c for r in rows)]
+    fig, axes = plt.subplots(1, len(cases), figsize=(6.5 * len(cases), 6.2), squeeze=False)
+    style = {"rate": ("o", "C0"), "every": ("s", "C1"), "dt": ("^", "C2"), "seed": ("*", "C3")}
+    fronts = {}
+    for ax, case in zip(axes[0], cases):
+        rs = [r for r in rows if r["case"] == case and r["sweep"] in ("rate", "every", "dt")]
+        pts = [r for r in rs if r["status"] == "ok" and not r["is_reference"]
+               and np.isfinite(r.get("rms_ratio_vs_case_ref", np.nan))]
+        sc = scatter.get(case, {}).get("rms_ratio", np.nan)
+        lo = min([r["rms_ratio_vs_case_ref"] for r in pts] + ([sc] if np.isfinite(sc) else [])
+                 + [1.0]) / 2.5
+        for sweep, (mk, col) in style.items():
+            sel = [r for r in pts if r["sweep"] == sweep]
+            if sel:
+                ax.scatter([r[tkey] for r in sel], [r["rms_ratio_vs_case_ref"] for r in sel],
+                           marker=mk, color=col, s=50, label=f"{sweep} sweep", zorder=3)
+                for r in sel:
+                    lab = {"rate": f"{r['rate']:g}", "every": f"e{r['every']}",
+                           "dt": f"dt {r['dt']:g}"}.get(sweep, "")
+                    ax.annotate(lab, (r[tkey], r["rms_ratio_vs_case_ref"]), fontsize=7,
+                                xytext=(4, 3), textcoords="offset points")
+        refs = [r for r in rs if r["is_reference"] and r["sweep"] == "rate" and r["status"] == "ok"]
+        for r in refs:
+            ax.scatter([r[tkey]], [lo], marker="v", color="k", s=60, zorder=3,
+                       label=f"case reference (rate {r['rate']:g}, error 0)")
+        bad = [r for r in rs if r["status"] != "ok"]
+        for r in bad:
+            ax.scatter([r[tkey] if np.isfinite(r[tkey]) else 1], [lo], marker="x",
+                       color="r", s=60, zorder=3, label="failed/unstable")
+        if pts:
+            front = pareto([(r[tkey], r["rms_ratio_vs_case_ref"]) for r in pts])
+            fr = sorted([pts[i] for i in front], key=lambda r: r[tkey])
+            fronts[case] = fr
+            ax.plot([r[tkey] for r in fr], [r["rms_ratio_vs_case_ref"] for r in fr], "k--",
+                    lw=1, zorder=2, label="Pareto front")
+            ax.scatter([r[tkey] for r in fr], [r["rms_ratio_vs_case_ref"] for r in fr],
+                       s=160, facecolors="none", edgecolors="k", zorder=4)
+        for r in rows:
+            if r["case"] == case and r["sweep"] == "seed@rate" and r["status"] == "ok":
+                ax.axhline(r["rms_ratio"], color="C3", lw=0.8, ls=":",
+                           label="scatter at other rates" if True else None)
+                ax.annotate(f"scatter @ {r['rate']:g} /s", (ax.get_xlim()[0], r["rms_ratio"]),
+                            fontsize=6, color="C3", xytext=(2, 2), textcoords="offset points")
+        s = scatter.get(case)
+        if s and np.isfinite(s.get("rms_ratio", np.nan)):
+            ax.axhspan(lo / 10, s["rms_ratio"], color="0.9", zorder=0,
+                       label="below the scatter: noise")
+            ax.axhline(s["rms_ratio"], color="C3", lw=1.5,
+                       label=f"sample scatter (RMS of {s['n']} seed pairs) = {s['rms_ratio']:.3g}")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_ylim(bottom=lo / 1.5)
+        ax.set_xlabel(("CPU time (user+sys)" if tkey == "cpu_s" else "wall time ('Loop time')")
+                      + " of the shear run [s], 1 rank")
+        ax.set_ylabel("RMS Δ(σ1/σ3) vs the case reference")
+        ax.set_title(f"{case}: run time against error")
+        ax.grid(True, which="both", alpha=0.3)
+        h, lab = ax.get_legend_handles_labels()
+        uniq = dict(zip(lab, h))
+        ax.legend(uniq.values(), uniq.keys(), fontsize=7, loc="upper center",
+                  bbox_to_anchor=(0.5, -0.13), ncol=2)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return fronts
+
+
+# ----------------------------------------------------------------------------- main
+def main(argv):
+    args = parse_args(argv)
+    t_start = time.time()
+    args.sampledir = os.path.join(os.path.abspath(args.workdir), f"scale{tag(args.scale)}")
+    args.rundir = os.path.join(args.sampledir, f"strain{tag(args.strain)}")
+    os.makedirs(args.rundir, exist_ok=True)
+    args.exe_copy = os.path.join(args.sampledir, "liggghts-membrane")
+    if not args.report_only:
+        shutil.copy2(args.exe, args.exe_copy + ".new")
+        os.replace(args.exe_copy + ".new", args.exe_copy)
+    exe_sha = args.exe_sha = sha(args.exe_copy) if os.path.exists(args.exe_copy) else "?"
+    # the input scripts too are copied (by content hash): runs made with another
+    # version of the executable or of a script are re-run, never mixed
+    args.scripts, args.script_sha = {}, {}
+    os.makedirs(os.path.join(args.sampledir, "inputs"), exist_ok=True)
+    for case in ("rigid", "membrane"):
+        src = os.path.join(EXAMPLES, f"in.shear_{case}")
+        args.script_sha[case] = sha(src)
+        args.scripts[case] = os.path.join(args.sampledir, "inputs",
+                                          f"in.shear_{case}.{args.script_sha[case]}")
+        if not os.path.exists(args.scripts[case]):
+            shutil.copy2(src, args.scripts[case])
+    seed0 = args.seeds[0]
+    ref_rate, rate_d, dt_d = min(args.rates), args.default_rate, args.default_dt
+    every_ref = min(args.everys)
+
+    runs = {}
+
+    def get(case, seed, rate, dt=dt_d, every=every_ref):
+        r = Run(case, seed, rate, dt, every if case == "membrane" else 0, args)
+        return runs.setdefault(r.key, r)
+
+    cases = ("rigid", "membrane")
+    plan = []   # (sweep, run, reference run)
+    ref0 = {c: get(c, seed0, ref_rate) for c in cases}
+    if "rate" in args.sweeps:
+        for c in cases:
+            for rate in sorted(args.rates):
+                plan.append(("rate", get(c, seed0, rate), ref0[c]))
+    if "every" in args.sweeps:
+        ref = get("membrane", seed0, rate_d, every=every_ref)
+        for ev in sorted(args.everys):
+            plan.append(("every", get("membrane", seed0, rate_d, every=ev), ref))
+    if "dt" in args.sweeps:
+        ref = get("rigid", seed0, rate_d, dt=dt_d)
+        for dt in sorted(args.dts):
+            plan.append(("dt", get("rigid", seed0, rate_d, dt=dt), ref))
+    if "seed" in args.sweeps and len(args.seeds) > 1:
+        for c in cases:
+            plan.append(("seed", get(c, args.seeds[1], ref_rate), ref0[c]))
+        for rate in sorted(set(args.scatter_rates) - {ref_rate}):
+            for c in cases:
+                plan.append(("seed@rate", get(c, args.seeds[1], rate), get(c, seed0, rate)))
+        # the same runs give the rate error on the second sample too (no extra run)
+        if "rate" in args.sweeps:
+            for rate in sorted(set(args.scatter_rates) - {ref_rate}):
+                for c in cases:
+                    plan.append(("rate@seed2", get(c, args.seeds[1], rate),
+                                 get(c, args.seeds[1], ref_rate)))
+    seeds = sorted({r.seed for r in runs.values()}, key=args.seeds.index)
+
+    log(f"accuracy sweep: scale {args.scale:g}, strain {args.strain:g}, {len(runs)} runs "
+        f"({sum(r.nsteps for r in runs.values())} steps), {args.jobs} at a time, 1 rank each; "
+        f"executable {args.exe_copy} (sha256 {exe_sha})")
+    with cf.ThreadPoolExecutor(max_workers=min(args.jobs, 2 if args.jobs >= 2 else 1)) as pool:
+        restarts = dict(zip(seeds, pool.map(lambda s: prepare(s, args), seeds)))
+        todo = sorted(runs.values(), key=lambda r: -r.cost())   # longest first
+        futs = [pool.submit(execute, r, args, restarts[r.seed]) for r in todo]
+        for f in cf.as_completed(futs):
+            f.result()
+    for r in runs.values():
+        load(r)
+    executed = [r.name for r in runs.values() if r.meta.get("executed_now")]
+    inv_file = os.path.join(args.rundir, "invocations.json")
+    invocations = json.load(open(inv_file)) if os.path.exists(inv_file) else []
+    if executed:
+        invocations.append(dict(start=time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(t_start)),
+                                wall_s=time.time() - t_start, runs=executed, argv=argv))
+        json.dump(invocations, open(inv_file, "w"), indent=1)
+
+    # scatter: the two seeds' references
+    rows = []
+    for sweep, run, ref in plan:
+        row = row_for(sweep, run, ref, ref0[run.case], args)
+        if sweep == "seed@rate":
+            row["is_reference"] = 0
+        rows.append(row)
+    # the scatter level of each error: RMS over the seed comparisons (at the reference
+    # rate and at --scatter-rates; a single pair of samples gives a single, random value)
+    scatter = {}
+    for c in cases:
+        sr = [r for r in rows if r["case"] == c and r["sweep"].startswith("seed") and r["status"] == "ok"]
+        if sr:
+            scatter[c] = {k: float(np.sqrt(np.nanmean([r[k] ** 2 for r in sr])))
+                          if any(np.isfinite(r[k]) for r in sr) else float("nan")
+                          for k in ERR_KEYS + ["mean_ratio"]}
+            scatter[c]["n"] = len(sr)
+            row = dict(sweep="scatter", case=c, seed="", rate="", dt="", every="",
+                       reference=f"RMS of the {len(sr)} seed comparisons", is_reference=0,
+                       status="ok", symptom="", steps="", wall_s=float("nan"),
+                       cpu_s=float("nan"), I_max=float("nan"), escaped="", chain_failures="",
+                       rms_ratio_vs_case_ref=float("nan"), within_scatter="")
+            row.update(scatter[c])
+            rows.append(row)
+    for row in rows:
+        row["within_scatter"] = "" if row["is_reference"] or row["sweep"] != sweep_of(row) \
+            else within(row, scatter.get(row["case"]))
+
+    with open(args.prefix + ".csv", "w", newline="") as f:
+        w = csv.DictWriter(f, CSV_KEYS, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v)
+                        for k, v in r.items()})
+    tkey = "cpu_s" if args.time_axis == "cpu" else "wall_s"
+    fronts = plot(rows, scatter, args.prefix + ".png", tkey)
+
+    # recommendations: the fastest setting of each sweep within the scatter
+    rec = []
+    for sweep, case in (("rate", "rigid"), ("rate", "membrane"), ("every", "membrane"),
+                        ("dt", "rigid")):
+        sel = [r for r in rows if r["sweep"] == sweep and r["case"] == case]
+        second = {r["rate"]: r for r in rows if r["sweep"] == "rate@seed2" and r["case"] == case}
+        good = [r for r in sel if r["is_reference"] or (
+            r.get("within_scatter") == "yes" and
+            (sweep != "rate" or r["rate"] not in second
+             or second[r["rate"]].get("within_scatter") == "yes"))]
+        if not sel or case not in scatter:
+            continue
+        best = min(good, key=lambda r: r[tkey]) if good else None
+        if best is not None:
+            rec.append(f"- {sweep} sweep, {case}: fastest within the sample scatter = "
+                       f"**{setting(best)}** ({fmt(best['wall_s'], '{:.0f}')} s wall, "
+                       f"{fmt(best['cpu_s'], '{:.0f}')} s CPU, "
+                       f"RMS Δ(σ1/σ3) {fmt(best.get('rms_ratio', 0))} vs scatter "
+                       f"{fmt(scatter[case]['rms_ratio'])}, I_max {fmt(best['I_max'], '{:.2g}')})")
+    total_core = sum(r.meta.get("loop_time_s", 0.0) or 0.0 for r in runs.values())
+    notes = []
+    ok_runs = [r for r in runs.values() if r.meta["status"] == "ok"]
+    for c in cases:
+        r = runs.get((c, seed0, ref_rate, dt_d, every_ref if c == "membrane" else 0))
+        if r is not None and r.meta["status"] == "ok":
+            f = ref_rate / PUBLISHED_RATE
+            notes.append(f"- Published rate 2 %/min = {PUBLISHED_RATE:.3g} /s, {c}: "
+                         f"{int(math.ceil(args.strain / (PUBLISHED_RATE * dt_d)))} steps, about "
+                         f"{r.meta['loop_time_s'] * f / 60:.0f} min on 1 rank at this size "
+                         f"(the {ref_rate:g} /s reference × {f:.1f}; steps ∝ 1/rate); not run.")
+    full = (1.0 / args.scale) ** 2
+    notes.append(f"- Sum of the shear-run loop times: {total_core / 60:.1f} core-min "
+                 f"({len(ok_runs)}/{len(runs)} runs ok). The same command at --scale 1 "
+                 f"(~4× the disks, cost ∝ disks) would need about {total_core * full / 60:.0f} "
+                 f"core-min at --strain {args.strain:g}, {total_core * full * 0.10 / args.strain / 60:.0f} "
+                 f"at --strain 0.10, i.e. /{args.jobs} in wall time with --jobs {args.jobs}, plus the "
+                 f"preparation of 2 full samples.")
+    for r in runs.values():
+        m = r.meta
+        if m["status"] != "ok":
+            notes.append(f"- {r.name}: {m['status']}: {m.get('symptom', '')}")
+    mem = [r for r in ok_runs if r.case == "membrane"]
+    if mem:
+        esc = sorted({m.meta.get("escaped", float("nan")) for m in mem})
+        cf_ = sorted({m.meta.get("chain_failures", float("nan")) for m in mem})
+        notes.append(f"- Membrane 'SHEAR done' lines: escaped disks at the end "
+                     f"{', '.join(f'{x:g}' for x in esc)}; chain failures "
+                     f"{', '.join(f'{x:g}' for x in cf_)} (per run: the CSV).")
+    fast = sorted({r.rate for r in ok_runs if r.curves and r.curves.get("I_max", 0) > 1e-3})
+    if fast:
+        notes.append(f"- I_max > 1e-3 (not quasi-static by the spec's criterion) at rates "
+                     f"{', '.join(f'{x:g}' for x in fast)} /s.")
+    for inv in invocations:
+        notes.append(f"- Invocation {inv['start']}: {inv['wall_s'] / 60:.1f} min wall, "
+                     f"{len(inv['runs'])} runs executed.")
+    front_text = [f"- {c}: " + ", ".join(f"{setting(r)} [{r['sweep']}]" for r in fr)
+                  for c, fr in fronts.items()]
+    wall = time.time() - t_start
+    shown = [a for a in argv if a != "--report-only"]
+    took = (f"this invocation took {wall / 60:.1f} min of wall time" if executed else
+            "the runs were made by the invocations listed in the Notes")
+    md = ["# Run time against error of the biaxial test\n",
+          f"Command: `/usr/bin/python3 bench/accuracy_sweep.py {' '.join(shown)}`".rstrip() + "  ",
+          f"Sample: generate_sample.py --scale {args.scale:g} (seeds {', '.join(map(str, args.seeds))}), "
+          f"in.prepare; sheared to ε_11 = {args.strain:g}; every run on 1 MPI rank, "
+          f"{args.jobs} at a time; {took} (runs reused from {args.rundir} are not "
+          f"re-run).  ",
+          f"Errors: each run against the reference of its sweep (**ref**) on a common ε_11 grid "
+          f"over 0..{args.strain:g}; Δ = run − reference. 'RMS Δ(σ1/σ3) vs case ref': against the "
+          f"slowest-rate run of the same case (the y axis of the plot). 'seed' rows: the reference "
+          f"repeated on a second sample (and, 'seed@rate', the same pair at other rates) = the "
+          f"sample-to-sample scatter; 'scatter' rows: the RMS over those pairs, the noise level "
+          f"used. 'within scatter': |error| ≤ scatter for {', '.join(GATE_KEYS)} (E, φ, ψ and "
+          f"fabric errors are given but not gated: ψ and E of one run are noisy). Wall time = "
+          f"the sum of the log's 'Loop time' lines (the membrane's 2000 settling steps "
+          f"included); CPU = user+sys time of the process (others used the machine too: "
+          f"wall > CPU means the run was descheduled). Output every {args.dstrain_out:g} of "
+          f"strain in every run. Executable sha256 {exe_sha}, scripts "
+          f"{', '.join(f'in.shear_{c} {h}' for c, h in args.script_sha.items())}.\n",
+          markdown_table(rows), "",
+          "![run time against error](accuracy_sweep.png)\n",
+          "## Fastest settings within the sample scatter\n", *rec, "",
+          f"Pareto front ({args.time_axis} time vs RMS Δ(σ1/σ3) against the case reference, "
+          f"circled in the plot):", *front_text, "",
+          "## Notes\n", *notes, ""]
+    text = "\n".join(md)
+    open(args.prefix + ".md", "w").write(text)
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
