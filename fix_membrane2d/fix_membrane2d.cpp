@@ -37,6 +37,10 @@ using membrane::Side;
 namespace {
 
 enum { LEFT = 0, RIGHT = 1 };
+
+// a failed search is repeated with the band widened by this factor, at most this often
+constexpr double BAND_WIDENING = 2.5;
+constexpr int MAX_WIDENINGS = 2;
 const char *side_name(int s) { return s == LEFT ? "left" : "right"; }
 
 enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
@@ -52,7 +56,7 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   thickness(1.0), band_width(-1.0), tolerance(-1.0), d50(0.0), detect_every(1),
   membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
   pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true),
-  redetections(0), failures(0), nmax_flag(0)
+  redetections(0), failures(0), widenings(0), nmax_flag(0)
 {
   if (domain->dimension != 2)
     error->all(FLERR, msg("requires dimension 2").c_str());
@@ -349,12 +353,12 @@ void FixMembrane2d::pre_force(int)
 
 /* ---------------------------------------------------------------------- */
 
-void FixMembrane2d::gather_bands()
+void FixMembrane2d::gather_bands(double width)
 {
   // One pass over the local disks for both sides: the slices are the same.
   const membrane::Platens platens{ylo, yhi};
   for (SideState &s : sides)
-    if (s.active) s.slices.reset(s.side, platens, band_width);
+    if (s.active) s.slices.reset(s.side, platens, width);
   const membrane::BandSlices &slicing = sides[sides[LEFT].active ? LEFT : RIGHT].slices;
   double **x = atom->x;
   double *radius = atom->radius;
@@ -380,7 +384,7 @@ void FixMembrane2d::gather_bands()
     if (!(atom->mask[i] & groupbit)) continue;
     for (int k = LEFT; k <= RIGHT; k++) {
       if (!sides[k].active ||
-          !sides[k].slices.contains_in_slice(slice_of_atom[i], x[i][0], radius[i], band_width))
+          !sides[k].slices.contains_in_slice(slice_of_atom[i], x[i][0], radius[i], width))
         continue;
       const double rec[BAND_FIELDS] = {static_cast<double>(k), static_cast<double>(atom->tag[i]),
                                        x[i][0], x[i][1], radius[i],
@@ -412,45 +416,68 @@ void FixMembrane2d::gather_bands()
 
 void FixMembrane2d::detect_chains()
 {
+  // A band narrower than the sample's surface roughness can cut every contact
+  // path to the top (seen at 8 % axial strain with 4 D50 where 10 D50 found the
+  // chain): before declaring the chain lost, widen the band and search again.
   redetections++;
-  gather_bands();
-  for (int k = LEFT; k <= RIGHT; k++) {
-    SideState &s = sides[k];
-    if (!s.active) continue;
-    find_chain(k);
-    if (!result.ok) {
-      failures++;
-      if (s.chain_tags.empty())
-        error->all(FLERR, msg(std::string("no chain of touching particles from the bottom to the top platen on the ") +
-                              side_name(k) + " side at step " + std::to_string(update->ntimestep) + ": " +
-                              result.failure + "; check ylo/yhi, the band width and the tolerance").c_str());
-      if (!s.warned && comm->me == 0) {
-        error->warning(FLERR, msg(std::string("chain lost on the ") + side_name(k) + " side at step " +
-                                  std::to_string(update->ntimestep) + " (" + result.failure +
-                                  "): keeping the previous chain; counted in f_ID[12], warned once").c_str());
+  bool pending[2] = {sides[LEFT].active, sides[RIGHT].active};
+  double width = band_width;
+  for (int attempt = 0; attempt <= MAX_WIDENINGS && (pending[LEFT] || pending[RIGHT]); attempt++) {
+    if (attempt > 0) {
+      width *= BAND_WIDENING;
+      widenings++;
+    }
+    gather_bands(width);
+    for (int k = LEFT; k <= RIGHT; k++) {
+      if (!pending[k]) continue;
+      find_chain(k);
+      if (result.ok) {
+        accept_chain(k);
+        pending[k] = false;
+      } else if (attempt == MAX_WIDENINGS) {
+        chain_lost(k);
       }
-      s.warned = true;
-      continue;
     }
-    const std::vector<long> old_tags = s.chain_tags;
-    s.chain_tags.clear();
-    s.chain_position.clear();
-    for (int idx : result.chain) {
-      s.chain_position[s.band[idx].tag] = s.chain_tags.size();
-      s.chain_tags.push_back(s.band[idx].tag);
-    }
-    s.escaped_tags.clear();
-    s.escaped_radius.clear();
-    for (int idx : result.escaped) {
-      s.escaped_tags.push_back(s.band[idx].tag);
-      s.escaped_radius.push_back(s.band[idx].r);
-    }
-    if (membrane_type > 0) {
-      // the type a disk has when it joins the chain, as seen by every rank
-      for (int idx : result.chain)
-        if (s.band_type[idx] != membrane_type) observed_type[s.band[idx].tag] = s.band_type[idx];
-      switch_types(old_tags, s.chain_tags);
-    }
+  }
+}
+
+void FixMembrane2d::chain_lost(int k)
+{
+  SideState &s = sides[k];
+  failures++;
+  if (s.chain_tags.empty())
+    error->all(FLERR, msg(std::string("no chain of touching particles from the bottom to the top platen on the ") +
+                          side_name(k) + " side at step " + std::to_string(update->ntimestep) + ": " +
+                          result.failure + "; check ylo/yhi, the band width and the tolerance").c_str());
+  if (!s.warned && comm->me == 0) {
+    error->warning(FLERR, msg(std::string("chain lost on the ") + side_name(k) + " side at step " +
+                              std::to_string(update->ntimestep) + " (" + result.failure +
+                              "): keeping the previous chain; counted in f_ID[12], warned once").c_str());
+  }
+  s.warned = true;
+}
+
+void FixMembrane2d::accept_chain(int k)
+{
+  SideState &s = sides[k];
+  const std::vector<long> old_tags = s.chain_tags;
+  s.chain_tags.clear();
+  s.chain_position.clear();
+  for (int idx : result.chain) {
+    s.chain_position[s.band[idx].tag] = s.chain_tags.size();
+    s.chain_tags.push_back(s.band[idx].tag);
+  }
+  s.escaped_tags.clear();
+  s.escaped_radius.clear();
+  for (int idx : result.escaped) {
+    s.escaped_tags.push_back(s.band[idx].tag);
+    s.escaped_radius.push_back(s.band[idx].r);
+  }
+  if (membrane_type > 0) {
+    // the type a disk has when it joins the chain, as seen by every rank
+    for (int idx : result.chain)
+      if (s.band_type[idx] != membrane_type) observed_type[s.band[idx].tag] = s.band_type[idx];
+    switch_types(old_tags, s.chain_tags);
   }
 }
 
@@ -655,6 +682,7 @@ void FixMembrane2d::update_outputs()
   v[REDETECTIONS] = static_cast<double>(redetections);
   v[FAILURES] = static_cast<double>(failures);
   v[PRESSURE] = pressure;
+  v[WIDENINGS] = static_cast<double>(widenings);
 }
 
 double FixMembrane2d::compute_vector(int n)
@@ -706,6 +734,7 @@ void FixMembrane2d::write_restart(FILE *fp)
   }
   buf.push_back(static_cast<double>(redetections));
   buf.push_back(static_cast<double>(failures));
+  buf.push_back(static_cast<double>(widenings));
   if (comm->me == 0) {
     int size = static_cast<int>(buf.size() * sizeof(double));
     fwrite(&size, sizeof(int), 1, fp);
@@ -737,6 +766,7 @@ void FixMembrane2d::restart(char *raw)
   }
   redetections = static_cast<bigint>(buf[m++]);
   failures = static_cast<bigint>(buf[m++]);
+  widenings = static_cast<bigint>(buf[m++]);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -49,7 +49,7 @@ class FixMembrane2d : public Fix {
   enum VectorIndex {
     AREA = 0, MEAN_WIDTH, MID_WIDTH, CHAIN_LEFT, CHAIN_RIGHT, ESCAPED,
     FX_LEFT, FY_LEFT, FX_RIGHT, FY_RIGHT, REDETECTIONS, FAILURES, PRESSURE,
-    VECTOR_SIZE
+    WIDENINGS, VECTOR_SIZE
   };
   enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };
 
@@ -100,7 +100,7 @@ class FixMembrane2d : public Fix {
   double pressure, ylo, yhi;
   bool force_detection;
   double vector_values[VECTOR_SIZE];
-  bigint redetections, failures;
+  bigint redetections, failures, widenings;
 
   int nmax_flag;
   std::vector<double> sendbuf, recvbuf;
@@ -114,7 +114,9 @@ class FixMembrane2d : public Fix {
   void compute_d50();
   void check_time_step();
   void allgather(int nper);
-  void gather_bands();
+  void gather_bands(double width);
+  void accept_chain(int side);
+  void chain_lost(int side);
   void detect_chains();
   void find_chain(int side);
   void switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags);
