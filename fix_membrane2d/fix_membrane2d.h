@@ -113,7 +113,6 @@ class FixMembrane2d : public Fix {
   void check_platens();
   void compute_d50();
   void check_time_step();
-  void allgather(int nper);
   void gather_bands(double width);
   void accept_chain(int side);
   void chain_lost(int side);
