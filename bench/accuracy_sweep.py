@@ -698,13 +698,13 @@ def main(argv):
           f"sample-to-sample scatter; 'scatter' rows: the RMS over those pairs, the noise level "
           f"used. 'within scatter': |error| ≤ scatter for {', '.join(GATE_KEYS)} (E, φ, ψ and "
           f"fabric errors are given but not gated: ψ and E of one run are noisy). Wall time = "
-          f"the sum of the log's 'Loop time' lines (the membrane's 2000 settling steps "
+          f"the sum of the log's 'Loop time' lines (the membrane's settling steps "
           f"included); CPU = user+sys time of the process (others used the machine too: "
           f"wall > CPU means the run was descheduled). Output every {args.dstrain_out:g} of "
           f"strain in every run. Executable sha256 {exe_sha}, scripts "
           f"{', '.join(f'in.shear_{c} {h}' for c, h in args.script_sha.items())}.\n",
           markdown_table(rows), "",
-          "![run time against error](accuracy_sweep.png)\n",
+          "![run time against error](%s.png)\n" % os.path.basename(args.prefix),
           "## Fastest settings within the sample scatter\n", *rec, "",
           f"Pareto front ({args.time_axis} time vs RMS Δ(σ1/σ3) against the case reference, "
           f"circled in the plot):", *front_text, "",
