@@ -4,28 +4,53 @@
     /usr/bin/python3 bench/accuracy_sweep.py [--scale 0.5] [--strain 0.05] [--jobs 2]
         [--rates 0.00125,0.0025,0.005,0.01,0.02,0.04,0.08] [--everys 1,2,5,10,50]
         [--dts 1e-4,5e-5,2e-4,4e-4,8e-4] [--seeds 12345,54321] [--workdir out/accuracy_sweep]
+        [--dampings viscous:500,viscous:100,viscous:2000,viscous:5000,local:0.1,local:0.3,local:0.7]
+        [--damping-rates R1,R2] [--ranks 1,2,4] [--sweeps rate,every,dt,seed[,damping,ranks]]
 
 One command: generates and prepares (examples/biaxial/in.prepare) one sample per
-seed, shears it (in.shear_rigid / in.shear_membrane) on ONE MPI rank per run, at
-most --jobs runs at a time, and compares every run with the reference run of its
-sweep:
+seed, shears it (in.shear_rigid / in.shear_membrane) on ONE MPI rank per run (the
+ranks sweep excepted), at most --jobs runs at a time, and compares every run with
+the reference run of its sweep:
 
-  rate   both cases, -var rate R; reference = the slowest rate of --rates
-  every  membrane, -var every N at --default-rate; reference = the smallest N
-  dt     rigid, -var dt DT at --default-rate; reference = --default-dt
-  seed   the reference (slowest rate) of both cases repeated on the second seed:
-         the sample-to-sample scatter; an error below it is noise
+  rate     both cases, -var rate R; reference = the slowest rate of --rates
+  every    membrane, -var every N at --default-rate; reference = the smallest N
+  dt       rigid, -var dt DT at --default-rate; reference = --default-dt
+  seed     the reference (slowest rate) of both cases repeated on the second seed:
+           the sample-to-sample scatter; an error below it is noise
+  damping  both cases at --default-rate (and at any other --damping-rates) with each
+           damping of --dampings: viscous:G = -var damping 0 -var gvisc G (fix viscous,
+           N s/m; in.shear_membrane's settling drag uses gvisc too), local:A = -var
+           damping 1 -var adamp A (fix damping/local alpha A). Reference = the case
+           reference of the rate sweep (slowest rate, the scripts' default damping):
+           damping changes the physics at a given rate, the question is which damping
+           comes closest to the quasi-static answer. The scripts' default damping
+           (read from their 'variable damping/gvisc/adamp index' lines: viscous:500)
+           is the very run of the rate sweep at that rate (same name, reused).
+  ranks    both cases at --default-rate (default dt, every and damping, first seed) on
+           each of --ranks MPI ranks (mpirun --allow-run-as-root --oversubscribe -np N;
+           1 rank = the same run as the rate sweep's at that rate, without mpirun);
+           reference = the 1-rank run.
+           Wall time, speed-up and parallel efficiency against 1 rank; the errors show
+           how far the trajectories of a chaotic granular system drift apart when only
+           the order of floating-point sums changes. An N-rank run takes min(N, --jobs)
+           of the --jobs slots (with --jobs 2 it runs alone, after the 1-rank runs);
+           N > os.cpu_count() is marked oversubscribed. Speed-ups need an otherwise
+           idle machine.
+The last two are not in the default --sweeps (rate,every,dt,seed): add them with
+--sweeps rate,every,dt,seed,damping,ranks.
 
 Errors over 0..final strain on a common eps_11 grid: RMS and max difference of
 s1/s3 and eps_v; peak s1/s3 and its strain, E, phi, psi (scripts/biaxial/curves.py);
 RMS difference of the fabric a, C_n and mean lambda (gsi). Wall time = the sum of
-the 'Loop time' lines of the run's log. The output interval is set to a fixed
+the 'Loop time' lines of the run's log; CPU time = user+sys of the process and, for
+an N-rank run, of all its ranks (mpirun reaps them). The output interval is set to a fixed
 strain (--dstrain-out, the examples' 500 steps at rate 0.01, dt 1e-4), so every run
 has the same curve resolution and the same number of fabric evaluations.
 
 Writes bench/accuracy_sweep.csv (raw numbers), bench/accuracy_sweep.png (wall
 time vs RMS error of s1/s3 with the scatter level and the Pareto front) and
-bench/accuracy_sweep.md (the table), and prints the table. Runs already finished
+bench/accuracy_sweep.md (the table, the recommendations and, with the ranks sweep, the
+speed-up and efficiency per rank count), and prints the report. Runs already finished
 in --workdir (same parameters) are reused: the command can be re-run to resume.
 The executable is copied into --workdir at the start, so a rebuild by someone
 else does not change it in the middle of the sweep.
@@ -71,6 +96,63 @@ def ints(text):
     return [int(w) for w in text.split(",") if w.strip()]
 
 
+def damping(text):
+    """'viscous:G' or 'local:A' -> ('viscous', G) / ('local', A) (the canonical form)."""
+    kind, _, value = text.strip().partition(":")
+    kind = {"viscous": "viscous", "visc": "viscous", "local": "local"}.get(kind.strip().lower())
+    try:
+        x = float(value)
+    except ValueError:
+        x = float("nan")
+    if kind is None or not (x >= 0 and math.isfinite(x)):
+        raise argparse.ArgumentTypeError(f"damping '{text}': expected viscous:G or local:A")
+    if kind == "local" and x >= 1:
+        raise argparse.ArgumentTypeError(f"damping '{text}': local damping alpha must be < 1")
+    return (kind, x)
+
+
+def dampings(text):
+    out = []
+    for w in text.split(","):
+        if w.strip() and damping(w) not in out:
+            out.append(damping(w))
+    return out
+
+
+def damping_spec(d):
+    """('viscous', 500.0) -> 'viscous:500' (the --dampings form; CSV, meta.json)."""
+    return f"{d[0]}:{tag(d[1])}"
+
+
+def damping_text(d):
+    """The setting as the table gives it."""
+    return f"damping viscous {tag(d[1])} N·s/m" if d[0] == "viscous" else \
+        f"damping local α {tag(d[1])}"
+
+
+def damping_vars(d):
+    """The -var overrides of in.shear_* for a damping."""
+    if d[0] == "viscous":
+        return ["-var", "damping", "0", "-var", "gvisc", repr(d[1])]
+    return ["-var", "damping", "1", "-var", "adamp", repr(d[1])]
+
+
+def script_damping(path):
+    """The default damping of an input script, from its 'variable damping|gvisc|adamp
+    index X' lines (in.shear_*: damping 0, gvisc 500 -> ('viscous', 500.0))."""
+    v = {}
+    for line in open(path, errors="replace"):
+        m = re.match(r"\s*variable\s+(damping|gvisc|adamp)\s+index\s+(\S+)", line)
+        if m:
+            v.setdefault(m.group(1), m.group(2))
+    try:
+        if float(v.get("damping", 0)) > 0:
+            return ("local", float(v["adamp"]))
+        return ("viscous", float(v["gvisc"]))
+    except (KeyError, ValueError):
+        raise SystemExit(f"{path}: no 'variable damping/gvisc/adamp index' defaults found")
+
+
 def parse_args(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -93,8 +175,22 @@ def parse_args(argv):
                         "the reference rate is the one used; these check that it does not "
                         "depend on the rate)")
     p.add_argument("--sweeps", default="rate,every,dt,seed",
-                   help="which sweeps to run (comma list of rate, every, dt, seed)")
-    p.add_argument("--jobs", type=int, default=2, help="runs at a time, 1 rank each (2)")
+                   help="which sweeps to run (comma list of rate, every, dt, seed, damping, "
+                        "ranks; default rate,every,dt,seed)")
+    p.add_argument("--dampings", type=dampings,
+                   default=dampings("viscous:500,viscous:100,viscous:2000,viscous:5000,"
+                                    "local:0.1,local:0.3,local:0.7"),
+                   help="damping sweep: viscous:G (-var damping 0 -var gvisc G [N s/m]) or "
+                        "local:A (-var damping 1 -var adamp A), comma list")
+    p.add_argument("--damping-rates", type=floats, default=None,
+                   help="rates of the damping sweep (default: --default-rate only)")
+    p.add_argument("--ranks", type=ints, default=ints("1,2,4"),
+                   help="MPI rank counts of the ranks sweep (1 is always added: the reference)")
+    p.add_argument("--mpirun", default="mpirun",
+                   help="MPI launcher of the ranks sweep, run as MPIRUN --allow-run-as-root "
+                        "--oversubscribe -np N EXE ...")
+    p.add_argument("--jobs", type=int, default=2,
+                   help="job slots (2): 1-rank runs at a time; an N-rank run takes min(N, jobs)")
     p.add_argument("--dstrain-out", type=float, default=5e-4,
                    help="axial strain between output lines (5e-4)")
     p.add_argument("--grid", type=int, default=401, help="points of the common eps_11 grid")
@@ -113,6 +209,14 @@ def parse_args(argv):
     if a.jobs < 1:
         p.error("--jobs >= 1")
     a.sweeps = [s.strip() for s in a.sweeps.split(",") if s.strip()]
+    unknown = set(a.sweeps) - {"rate", "every", "dt", "seed", "damping", "ranks"}
+    if unknown:
+        p.error(f"unknown sweep(s) {', '.join(sorted(unknown))}")
+    if a.damping_rates is None:
+        a.damping_rates = [a.default_rate]
+    if any(n < 1 for n in a.ranks):
+        p.error("--ranks >= 1")
+    a.ranks = sorted(set(a.ranks) | {1})
     return a
 
 
@@ -126,31 +230,48 @@ def tag(x):
 
 
 class Run:
-    """One shear run: parameters, files and (after it ran) its measurements."""
+    """One shear run: parameters, files and (after it ran) its measurements.
 
-    def __init__(self, case, seed, rate, dt, every, args):
+    damping: ('viscous', G) or ('local', A); ranks: MPI ranks. The scripts' default
+    damping and 1 rank leave the name and params as they were before these two
+    parameters existed, so runs made then are reused."""
+
+    def __init__(self, case, seed, rate, dt, every, args, damping=None, ranks=1):
         self.case, self.seed, self.rate, self.dt, self.every = case, seed, rate, dt, every
+        self.damping = damping or args.default_damping[case]
+        self.ranks = ranks
         self.nsteps = int(math.ceil(args.strain / (rate * dt)))
         self.nout = max(1, int(round(args.dstrain_out / (rate * dt))))
         self.ndump = 10 * self.nout
+        self.default_damping = self.damping == args.default_damping[case]
         self.name = f"{case}_seed{seed}_rate{tag(rate)}_dt{tag(dt)}" + \
             (f"_every{every}" if case == "membrane" else "")
-        self.dir = os.path.join(args.rundir, self.name)
-        self.out = os.path.join(self.dir, "shear.txt")
-        self.script = args.scripts[case]
         self.params = dict(case=case, seed=seed, rate=rate, dt=dt, every=every,
                            strain=args.strain, scale=args.scale, nout=self.nout,
                            script_sha=args.script_sha[case], exe_sha=args.exe_sha)
+        if not self.default_damping:
+            self.name += ("_visc" if self.damping[0] == "viscous" else "_local") + tag(self.damping[1])
+            self.params["damping"] = damping_spec(self.damping)
+        if ranks != 1:
+            self.name += f"_np{ranks}"
+            self.params["ranks"] = ranks
+        self.dir = os.path.join(args.rundir, self.name)
+        self.out = os.path.join(self.dir, "shear.txt")
+        self.script = args.scripts[case]
         self.meta = None
         self.table = None
         self.curves = None
 
     @property
     def key(self):
-        return (self.case, self.seed, self.rate, self.dt, self.every)
+        return (self.case, self.seed, self.rate, self.dt, self.every, self.damping, self.ranks)
 
     def cost(self):
         return self.nsteps * (1.3 if self.case == "membrane" else 1.0)
+
+    def slots(self, jobs):
+        """Job slots taken: one per rank, at most all of them (then it runs alone)."""
+        return min(self.ranks, jobs)
 
 
 def run_command(cmd, cwd, screen, timeout):
@@ -207,22 +328,29 @@ def execute(run, args, restart):
     os.makedirs(run.dir, exist_ok=True)
     for f in os.listdir(run.dir):
         os.remove(os.path.join(run.dir, f))
-    cmd = [args.exe_copy, "-in", run.script,
+    mpi = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(run.ranks)] \
+        if run.ranks > 1 else []
+    cmd = mpi + [args.exe_copy, "-in", run.script,
            "-var", "restart", restart, "-var", "meshdir", os.path.join(EXAMPLES, "meshes"),
            "-var", "rate", repr(run.rate), "-var", "dt", repr(run.dt),
            "-var", "eatarget", repr(args.strain), "-var", "nout", str(run.nout),
            "-var", "ndump", str(run.ndump), "-var", "out", run.out, "-log", "log.shear"]
     if run.case == "membrane":
         cmd += ["-var", "every", str(run.every)]
+    if not run.default_damping:
+        cmd += damping_vars(run.damping)
     timeout = 600 + run.nsteps * 0.02        # 20 ms/step: far above the expected ~1 ms
-    log(f"  start {run.name}: {run.nsteps} steps, output every {run.nout}")
+    loadavg = os.getloadavg()[0]
+    log(f"  start {run.name}: {run.nsteps} steps, output every {run.nout}"
+        + (f", {run.ranks} ranks" if run.ranks > 1 else ""))
     screen = os.path.join(run.dir, "screen.txt")
     rc, wall, cpu = run_command(cmd, run.dir, screen, timeout)
     tloop, nsteps = loop_times(os.path.join(run.dir, "log.shear"))
     text = open(screen, errors="replace").read()
     done = [l for l in text.splitlines() if l.startswith("SHEAR done")]
     meta = dict(params=run.params, rc=rc, process_wall_s=wall, cpu_s=cpu, loop_time_s=tloop,
-                steps=nsteps, done_line=done[-1] if done else "", cmd=" ".join(cmd))
+                steps=nsteps, done_line=done[-1] if done else "", cmd=" ".join(cmd),
+                ranks=run.ranks, cores=os.cpu_count(), loadavg_start=loadavg)
     if rc == 0 and done:
         meta["status"], meta["symptom"] = "ok", ""
     else:
@@ -238,6 +366,33 @@ def execute(run, args, restart):
     log(f"  end   {run.name}: {meta['status']}, loop time {tloop:.1f} s"
         + (f" ({meta['symptom']})" if meta["symptom"] else ""))
     return run
+
+
+def run_all(todo, args, restarts):
+    """Execute the runs in order with at most --jobs job slots busy; a run takes
+    run.slots(jobs) of them (one per rank, at most all) and starts only when that
+    many are free (first come, first served: no run overtakes a waiting one)."""
+    cond = threading.Condition()
+    free = [args.jobs]
+
+    def work(run, need):
+        try:
+            return execute(run, args, restarts[run.seed])
+        finally:
+            with cond:
+                free[0] += need
+                cond.notify_all()
+
+    with cf.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        futs = []
+        for run in todo:
+            need = run.slots(args.jobs)
+            with cond:
+                cond.wait_for(lambda: free[0] >= need)
+                free[0] -= need
+            futs.append(pool.submit(work, run, need))
+        for f in cf.as_completed(futs):
+            f.result()
 
 
 def prepare(seed, args):
@@ -325,7 +480,11 @@ def row_for(sweep, run, ref, ref0, args):
     m = run.meta
     c = run.curves or {}
     row = dict(sweep=sweep, case=run.case, seed=run.seed, rate=run.rate, dt=run.dt,
-               every=run.every if run.case == "membrane" else "", reference=ref.name,
+               every=run.every if run.case == "membrane" else "",
+               damping=damping_spec(run.damping), default_damping=int(run.default_damping),
+               ranks=run.ranks,
+               cores=m.get("cores") or os.cpu_count(), loadavg_start=m.get("loadavg_start"),
+               reference=ref.name,
                is_reference=int(run is ref), status=m["status"], symptom=m.get("symptom", ""),
                steps=m.get("steps", ""), wall_s=m.get("loop_time_s", float("nan")),
                cpu_s=m.get("cpu_s", float("nan")),
@@ -346,11 +505,12 @@ ERR_KEYS = ["rms_ratio", "max_ratio", "rms_ev", "max_ev", "d_peak", "d_ea_peak",
             "d_phi", "d_psi", "rms_a", "rms_Cn", "rms_gsi"]
 # what "within the sample scatter" means (|error| <= |scatter| for each of these)
 GATE_KEYS = ["rms_ratio", "rms_ev", "d_peak"]
-CSV_KEYS = ["sweep", "case", "seed", "rate", "dt", "every", "reference", "is_reference", "status",
+CSV_KEYS = ["sweep", "case", "seed", "rate", "dt", "every", "damping", "ranks", "reference",
+            "is_reference", "status",
             "symptom", "steps", "wall_s", "cpu_s", "ms_per_step", "I_max", "escaped", "chain_failures",
             "peak_ratio", "ea_peak", "E", "phi", "psi"] + ERR_KEYS + \
            ["mean_ratio", "max_a", "max_Cn", "max_gsi", "ea_compared", "rms_ratio_vs_case_ref",
-            "within_scatter"]
+            "within_scatter", "speedup", "efficiency", "oversubscribed"]
 
 
 def within(row, scatter):
@@ -364,7 +524,8 @@ def within(row, scatter):
 
 def sweep_of(row):
     """The sweeps whose rows are judged against the scatter (not the scatter rows)."""
-    return row["sweep"] if row["sweep"] in ("rate", "every", "dt", "rate@seed2") else None
+    return row["sweep"] if row["sweep"] in ("rate", "every", "dt", "rate@seed2", "damping",
+                                            "ranks") else None
 
 
 def pareto(points):
@@ -388,7 +549,23 @@ def fmt(x, spec="{:.3g}", scale=1.0):
     return "—" if not np.isfinite(x) else spec.format(x * scale)
 
 
+def ranks_text(row):
+    """'2 ranks', '4 ranks (oversubscribed: 2 cores)', with speed-up and efficiency."""
+    n = int(row["ranks"])
+    t = f"{n} rank" + ("s" if n > 1 else "")
+    if row.get("oversubscribed"):
+        t += f" (oversubscribed: {row['cores']} cores)"
+    if n > 1 and np.isfinite(row.get("speedup", np.nan)):
+        t += f", speed-up {row['speedup']:.2f}, efficiency {100 * row['efficiency']:.0f} %"
+    return t
+
+
 def setting(row):
+    if row["sweep"] == "damping":
+        d = damping(row["damping"])
+        return damping_text(d) + (f" (rate {row['rate']:g})" if row.get("rate_note") else "")
+    if row["sweep"] == "ranks":
+        return ranks_text(row)
     if row["sweep"] == "every":
         return f"every {row['every']}"
     if row["sweep"] == "dt":
@@ -437,24 +614,48 @@ def plot(rows, scatter, path, tkey):
     import matplotlib.pyplot as plt
     cases = [c for c in ("rigid", "membrane") if any(r["case"] == c for r in rows)]
     fig, axes = plt.subplots(1, len(cases), figsize=(6.5 * len(cases), 6.2), squeeze=False)
-    style = {"rate": ("o", "C0"), "every": ("s", "C1"), "dt": ("^", "C2"), "seed": ("*", "C3")}
+    # damping: viscous and local as two series; ranks: x = wall time whatever the axis
+    # (an N-rank run's CPU time is that of its N ranks), not on the Pareto front
+    style = {"rate": ("o", "C0"), "every": ("s", "C1"), "dt": ("^", "C2"), "seed": ("*", "C3"),
+             "damping viscous": ("D", "C4"), "damping local": ("P", "C6"),
+             "ranks": ("h", "C5")}
+    swept = ("rate", "every", "dt", "damping", "ranks")
+
+    def series(r):
+        return r["sweep"] + (" " + r["damping"].split(":")[0] if r["sweep"] == "damping" else "")
+
+    def xof(r):
+        return r["wall_s"] if r["sweep"] == "ranks" else r[tkey]
+
     fronts = {}
     for ax, case in zip(axes[0], cases):
-        rs = [r for r in rows if r["case"] == case and r["sweep"] in ("rate", "every", "dt")]
-        pts = [r for r in rs if r["status"] == "ok" and not r["is_reference"]
-               and np.isfinite(r.get("rms_ratio_vs_case_ref", np.nan))]
+        rs = [r for r in rows if r["case"] == case and r["sweep"] in swept]
+        # the ranks sweep's 1-rank run is plotted too (its x is its wall time); the
+        # default damping at a rate of the rate sweep is that sweep's point already
+        rated = {r["rate"] for r in rs if r["sweep"] == "rate"}
+        pts = [r for r in rs if r["status"] == "ok"
+               and (not r["is_reference"] or r["sweep"] == "ranks")
+               and not (r["sweep"] == "damping" and r["default_damping"] and r["rate"] in rated)
+               and r.get("rms_ratio_vs_case_ref", np.nan) > 0 and np.isfinite(xof(r))]
         sc = scatter.get(case, {}).get("rms_ratio", np.nan)
         lo = min([r["rms_ratio_vs_case_ref"] for r in pts] + ([sc] if np.isfinite(sc) else [])
                  + [1.0]) / 2.5
         for sweep, (mk, col) in style.items():
-            sel = [r for r in pts if r["sweep"] == sweep]
+            sel = [r for r in pts if series(r) == sweep]
             if sel:
-                ax.scatter([r[tkey] for r in sel], [r["rms_ratio_vs_case_ref"] for r in sel],
-                           marker=mk, color=col, s=50, label=f"{sweep} sweep", zorder=3)
+                ax.scatter([xof(r) for r in sel], [r["rms_ratio_vs_case_ref"] for r in sel],
+                           marker=mk, color=col, s=50, zorder=3,
+                           label=f"{sweep} sweep" + (" (x = wall time)" if sweep == "ranks"
+                                                     else ""))
                 for r in sel:
                     lab = {"rate": f"{r['rate']:g}", "every": f"e{r['every']}",
-                           "dt": f"dt {r['dt']:g}"}.get(sweep, "")
-                    ax.annotate(lab, (r[tkey], r["rms_ratio_vs_case_ref"]), fontsize=7,
+                           "dt": f"dt {r['dt']:g}",
+                           "damping viscous": f"v{r['damping'].split(':')[1]}",
+                           "damping local": f"α{r['damping'].split(':')[1]}",
+                           "ranks": f"{r['ranks']}r"}.get(sweep, "")
+                    if sweep.startswith("damping") and len({x["rate"] for x in sel}) > 1:
+                        lab += f"@{r['rate']:g}"
+                    ax.annotate(lab, (xof(r), r["rms_ratio_vs_case_ref"]), fontsize=7,
                                 xytext=(4, 3), textcoords="offset points")
         refs = [r for r in rs if r["is_reference"] and r["sweep"] == "rate" and r["status"] == "ok"]
         for r in refs:
@@ -462,11 +663,12 @@ def plot(rows, scatter, path, tkey):
                        label=f"case reference (rate {r['rate']:g}, error 0)")
         bad = [r for r in rs if r["status"] != "ok"]
         for r in bad:
-            ax.scatter([r[tkey] if np.isfinite(r[tkey]) else 1], [lo], marker="x",
+            ax.scatter([xof(r) if np.isfinite(xof(r)) else 1], [lo], marker="x",
                        color="r", s=60, zorder=3, label="failed/unstable")
-        if pts:
-            front = pareto([(r[tkey], r["rms_ratio_vs_case_ref"]) for r in pts])
-            fr = sorted([pts[i] for i in front], key=lambda r: r[tkey])
+        cand = [r for r in pts if r["sweep"] != "ranks"]
+        if cand:
+            front = pareto([(r[tkey], r["rms_ratio_vs_case_ref"]) for r in cand])
+            fr = sorted([cand[i] for i in front], key=lambda r: r[tkey])
             fronts[case] = fr
             ax.plot([r[tkey] for r in fr], [r["rms_ratio_vs_case_ref"] for r in fr], "k--",
                     lw=1, zorder=2, label="Pareto front")
@@ -488,7 +690,9 @@ def plot(rows, scatter, path, tkey):
         ax.set_yscale("log")
         ax.set_ylim(bottom=lo / 1.5)
         ax.set_xlabel(("CPU time (user+sys)" if tkey == "cpu_s" else "wall time ('Loop time')")
-                      + " of the shear run [s], 1 rank")
+                      + " of the shear run [s], 1 rank"
+                      + ("; ranks sweep: wall time on N ranks"
+                         if any(r["sweep"] == "ranks" for r in pts) else ""))
         ax.set_ylabel("RMS Δ(σ1/σ3) vs the case reference")
         ax.set_title(f"{case}: run time against error")
         ax.grid(True, which="both", alpha=0.3)
@@ -525,14 +729,17 @@ def main(argv):
                                           f"in.shear_{case}.{args.script_sha[case]}")
         if not os.path.exists(args.scripts[case]):
             shutil.copy2(src, args.scripts[case])
+    # the damping the scripts use when no -var damping is given (the runs' default)
+    args.default_damping = {c: script_damping(args.scripts[c]) for c in args.scripts}
     seed0 = args.seeds[0]
     ref_rate, rate_d, dt_d = min(args.rates), args.default_rate, args.default_dt
     every_ref = min(args.everys)
 
     runs = {}
 
-    def get(case, seed, rate, dt=dt_d, every=every_ref):
-        r = Run(case, seed, rate, dt, every if case == "membrane" else 0, args)
+    def get(case, seed, rate, dt=dt_d, every=every_ref, damping=None, ranks=1):
+        r = Run(case, seed, rate, dt, every if case == "membrane" else 0, args,
+                damping=damping, ranks=ranks)
         return runs.setdefault(r.key, r)
 
     cases = ("rigid", "membrane")
@@ -562,17 +769,35 @@ def main(argv):
                 for c in cases:
                     plan.append(("rate@seed2", get(c, args.seeds[1], rate),
                                  get(c, args.seeds[1], ref_rate)))
+    if "damping" in args.sweeps:
+        # reference: the case reference of the rate sweep (slowest rate, default damping);
+        # the default damping at a rate of the rate sweep is that very run
+        for rate in sorted(args.damping_rates):
+            for c in cases:
+                for d in args.dampings:
+                    plan.append(("damping", get(c, seed0, rate, damping=d), ref0[c]))
+    if "ranks" in args.sweeps:
+        for c in cases:
+            ref = get(c, seed0, rate_d, ranks=1)
+            for n in args.ranks:
+                plan.append(("ranks", get(c, seed0, rate_d, ranks=n), ref))
     seeds = sorted({r.seed for r in runs.values()}, key=args.seeds.index)
 
+    if not args.report_only and any(r.ranks > 1 for r in runs.values()) \
+            and shutil.which(args.mpirun) is None:
+        raise SystemExit(f"ranks sweep: no MPI launcher '{args.mpirun}' (--mpirun)")
     log(f"accuracy sweep: scale {args.scale:g}, strain {args.strain:g}, {len(runs)} runs "
-        f"({sum(r.nsteps for r in runs.values())} steps), {args.jobs} at a time, 1 rank each; "
-        f"executable {args.exe_copy} (sha256 {exe_sha})")
+        f"({sum(r.nsteps for r in runs.values())} steps), {args.jobs} job slots, 1 rank each"
+        + (" (ranks sweep: N ranks take min(N, jobs) slots, after the 1-rank runs)"
+           if any(r.ranks > 1 for r in runs.values()) else "")
+        + f"; executable {args.exe_copy} (sha256 {exe_sha})")
     with cf.ThreadPoolExecutor(max_workers=min(args.jobs, 2 if args.jobs >= 2 else 1)) as pool:
         restarts = dict(zip(seeds, pool.map(lambda s: prepare(s, args), seeds)))
-        todo = sorted(runs.values(), key=lambda r: -r.cost())   # longest first
-        futs = [pool.submit(execute, r, args, restarts[r.seed]) for r in todo]
-        for f in cf.as_completed(futs):
-            f.result()
+    # 1-rank runs longest first, then the multi-rank runs: a run starts when its job
+    # slots are free, in this order (a multi-rank run waits for them, so with --jobs 2
+    # a 2- or 4-rank run has the machine's 2 cores to itself, as far as this script goes)
+    todo = sorted(runs.values(), key=lambda r: (r.ranks > 1, r.ranks, -r.cost()))
+    run_all(todo, args, restarts)
     for r in runs.values():
         load(r)
     executed = [r.name for r in runs.values() if r.meta.get("executed_now")]
@@ -589,6 +814,14 @@ def main(argv):
         row = row_for(sweep, run, ref, ref0[run.case], args)
         if sweep == "seed@rate":
             row["is_reference"] = 0
+        if sweep == "damping":
+            row["rate_note"] = int(len(args.damping_rates) > 1)
+        if sweep == "ranks":
+            row["oversubscribed"] = int(run.ranks > int(row["cores"]))
+            t1, tn = ref.meta.get("loop_time_s", np.nan), run.meta.get("loop_time_s", np.nan)
+            ok = run.meta["status"] == "ok" and ref.meta["status"] == "ok" and tn > 0
+            row["speedup"] = t1 / tn if ok else float("nan")
+            row["efficiency"] = row["speedup"] / run.ranks
         rows.append(row)
     # the scatter level of each error: RMS over the seed comparisons (at the reference
     # rate and at --scatter-rates; a single pair of samples gives a single, random value)
@@ -639,12 +872,96 @@ def main(argv):
                        f"{fmt(best['cpu_s'], '{:.0f}')} s CPU, "
                        f"RMS Δ(σ1/σ3) {fmt(best.get('rms_ratio', 0))} vs scatter "
                        f"{fmt(scatter[case]['rms_ratio'])}, I_max {fmt(best['I_max'], '{:.2g}')})")
-    total_core = sum(r.meta.get("loop_time_s", 0.0) or 0.0 for r in runs.values())
+    # damping: at a given rate every damping costs about the same, so the question is
+    # which one comes closest to the quasi-static reference (and which are within noise)
+    for case in cases:
+        sel = [r for r in rows if r["sweep"] == "damping" and r["case"] == case]
+        for rate in sorted({r["rate"] for r in sel}):
+            at = [r for r in sel if r["rate"] == rate]
+            ok = [r for r in at if r["status"] == "ok" and not r["is_reference"]
+                  and np.isfinite(r.get("rms_ratio", np.nan))]
+            if not ok:
+                continue
+            if any(r["is_reference"] for r in at):
+                rec.append(f"- damping sweep, {case} at {rate:g} /s: the reference rate, where "
+                           f"the default damping is the reference itself; the others differ by "
+                           + ", ".join(f"{damping_text(damping(r['damping']))[len('damping '):]} "
+                                       f"RMS {fmt(r['rms_ratio'])} "
+                                       f"({'within' if r.get('within_scatter') == 'yes' else 'outside'})"
+                                       for r in ok)
+                           + f" (scatter {fmt(scatter.get(case, {}).get('rms_ratio', float('nan')))}).")
+                continue
+            best = min(ok, key=lambda r: r["rms_ratio"])
+            inside = [damping_text(damping(r["damping"]))[len("damping "):] for r in at
+                      if r.get("within_scatter") == "yes"]
+            failed = [damping_text(damping(r["damping"]))[len("damping "):] for r in at
+                      if r["status"] != "ok"]
+            dflt = [r for r in ok if r["damping"] == damping_spec(args.default_damping[case])]
+            sc = scatter.get(case, {}).get("rms_ratio", float("nan"))
+            rec.append(f"- damping sweep, {case} at {rate:g} /s: closest to the reference "
+                       f"(rate {ref_rate:g} /s, default damping) = **{damping_text(damping(best['damping']))}** "
+                       f"(RMS Δ(σ1/σ3) {fmt(best['rms_ratio'])}, Δpeak {fmt(best['d_peak'], '{:+.3g}')}, "
+                       f"Δψ {fmt(best['d_psi'], '{:+.2f}')}°, {fmt(best[tkey], '{:.0f}')} s {args.time_axis}"
+                       + (f"; default {dflt[0]['damping']}: RMS {fmt(dflt[0]['rms_ratio'])}, "
+                          f"Δpeak {fmt(dflt[0]['d_peak'], '{:+.3g}')}" if dflt and dflt[0] is not best
+                          else "")
+                       + f"; scatter {fmt(sc)}); within the sample scatter: "
+                       + (", ".join(inside) if inside else "none")
+                       + (f"; failed/unstable: {', '.join(failed)}" if failed else ""))
+    # ranks: wall time is what more ranks buy
+    ranks_par = []
+    for case in cases:
+        sel = [r for r in rows if r["sweep"] == "ranks" and r["case"] == case]
+        if not sel:
+            continue
+        good = [r for r in sel if r["status"] == "ok" and (r["is_reference"]
+                                                           or r.get("within_scatter") == "yes")]
+        if good and case in scatter:
+            best = min(good, key=lambda r: r["wall_s"])
+            rec.append(f"- ranks sweep, {case}: fastest within the sample scatter = "
+                       f"**{ranks_text(best)}** ({fmt(best['wall_s'], '{:.1f}')} s wall, "
+                       f"{fmt(best['cpu_s'], '{:.0f}')} s CPU of all ranks"
+                       + ("" if best["is_reference"] else
+                          f", RMS Δ(σ1/σ3) vs 1 rank {fmt(best['rms_ratio'])} vs scatter "
+                          f"{fmt(scatter[case]['rms_ratio'])}") + ")")
+        parts = []
+        for r in sel:
+            if r["status"] != "ok":
+                parts.append(f"{ranks_text(r)}: {r['status']}")
+                continue
+            lavg = r.get("loadavg_start")
+            t = f"{ranks_text(dict(r, speedup=np.nan))} {fmt(r['wall_s'], '{:.1f}')} s"
+            if not r["is_reference"]:
+                t += (f": speed-up {fmt(r['speedup'], '{:.2f}')}, efficiency "
+                      f"{fmt(r['efficiency'], '{:.0f}', 100)} %, RMS Δ(σ1/σ3) vs 1 rank "
+                      f"{fmt(r['rms_ratio'])}, vs the case reference "
+                      f"{fmt(r['rms_ratio_vs_case_ref'])}")
+            if lavg is not None:
+                t += f" (load average {lavg:.1f} at its start)"
+            parts.append(t)
+        ranks_par.append(f"- {case}: " + "; ".join(parts) + ".")
+    if ranks_par:
+        ncores = max(int(r["cores"]) for r in rows if r["sweep"] == "ranks")
+        ranks_par = [
+            "## Ranks sweep: speed-up and parallel efficiency\n",
+            f"Same run (rate {rate_d:g} /s, dt {dt_d:g} s, default damping and every, seed "
+            f"{seed0}) on N MPI ranks (`{args.mpirun} --allow-run-as-root --oversubscribe -np N`; "
+            f"1 rank without mpirun: the very run of the other sweeps). Speed-up = wall time "
+            f"('Loop time') on 1 rank / on N ranks, efficiency = speed-up / N; the errors are "
+            f"against the 1-rank run (the same physics, only the order of the floating-point "
+            f"sums differs, which a chaotic granular flow amplifies) and against the case "
+            f"reference. An N-rank run took min(N, {args.jobs}) of the {args.jobs} job slots, "
+            f"after the 1-rank runs, which themselves ran {args.jobs} at a time. "
+            f"**These figures are only meaningful on an otherwise idle machine** "
+            f"({ncores} cores here; N > {ncores} is oversubscribed; the 1-minute load "
+            f"average at the start of each run is given, our own runs included):\n",
+            *ranks_par, ""]
+    total_core = sum((r.meta.get("loop_time_s", 0.0) or 0.0) * r.ranks for r in runs.values())
     notes = []
     ok_runs = [r for r in runs.values() if r.meta["status"] == "ok"]
     for c in cases:
-        r = runs.get((c, seed0, ref_rate, dt_d, every_ref if c == "membrane" else 0))
-        if r is not None and r.meta["status"] == "ok":
+        r = ref0[c]
+        if r.meta["status"] == "ok":
             f = ref_rate / PUBLISHED_RATE
             if ref_rate <= PUBLISHED_RATE * 1.01:
                 notes.append(f"- Published rate 2 %/min = {PUBLISHED_RATE:.3g} /s, {c}: it is the "
@@ -688,15 +1005,25 @@ def main(argv):
     md = ["# Run time against error of the biaxial test\n",
           f"Command: `/usr/bin/python3 bench/accuracy_sweep.py {' '.join(shown)}`".rstrip() + "  ",
           f"Sample: generate_sample.py --scale {args.scale:g} (seeds {', '.join(map(str, args.seeds))}), "
-          f"in.prepare; sheared to ε_11 = {args.strain:g}; every run on 1 MPI rank, "
-          f"{args.jobs} at a time; {took} (runs reused from {args.rundir} are not "
+          f"in.prepare; sheared to ε_11 = {args.strain:g}; every run on 1 MPI rank"
+          + (" (the ranks sweep excepted)" if "ranks" in args.sweeps else "")
+          + f", {args.jobs} at a time; {took} (runs reused from {args.rundir} are not "
           f"re-run).  ",
           f"Errors: each run against the reference of its sweep (**ref**) on a common ε_11 grid "
           f"over 0..{args.strain:g}; Δ = run − reference. 'RMS Δ(σ1/σ3) vs case ref': against the "
           f"slowest-rate run of the same case (the y axis of the plot). 'seed' rows: the reference "
           f"repeated on a second sample (and, 'seed@rate', the same pair at other rates) = the "
           f"sample-to-sample scatter; 'scatter' rows: the RMS over those pairs, the noise level "
-          f"used. 'within scatter': |error| ≤ scatter for {', '.join(GATE_KEYS)} (E, φ, ψ and "
+          f"used. "
+          + ("'damping' rows: both cases with another damping (viscous G = fix viscous G "
+             "N·s/m, local α = fix damping/local alpha α; the scripts' default is "
+             + ", ".join(f"{damping_text(d)[len('damping '):]} ({c})"
+                         for c, d in args.default_damping.items())
+             + ") against the case reference: which damping comes closest to the "
+             "quasi-static answer at that rate. " if "damping" in args.sweeps else "")
+          + ("'ranks' rows: the same run on N MPI ranks against the 1-rank run (x = wall "
+             "time in the plot; see the section below). " if "ranks" in args.sweeps else "")
+          + f"'within scatter': |error| ≤ scatter for {', '.join(GATE_KEYS)} (E, φ, ψ and "
           f"fabric errors are given but not gated: ψ and E of one run are noisy). Wall time = "
           f"the sum of the log's 'Loop time' lines (the membrane's settling steps "
           f"included); CPU = user+sys time of the process (others used the machine too: "
@@ -706,6 +1033,7 @@ def main(argv):
           markdown_table(rows), "",
           "![run time against error](%s.png)\n" % os.path.basename(args.prefix),
           "## Fastest settings within the sample scatter\n", *rec, "",
+          *ranks_par,
           f"Pareto front ({args.time_axis} time vs RMS Δ(σ1/σ3) against the case reference, "
           f"circled in the plot):", *front_text, "",
           "## Notes\n", *notes, ""]
