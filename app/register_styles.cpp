@@ -20,6 +20,7 @@
 #include "compute_fabric.h"
 #include "fix_membrane2d.h"
 #include "fix_damping_local.h"
+#include "fix_stability_guard.h"
 
 using namespace LAMMPS_NS;
 
@@ -73,6 +74,7 @@ void register_project_styles(LAMMPS *lmp)
 #define FixStyle(key, Class) fix_map[#key] = &create_fix<Class>;
 #include "fix_membrane2d.h"
 #include "fix_damping_local.h"
+#include "fix_stability_guard.h"
 #undef FixStyle
 #undef FIX_CLASS
 

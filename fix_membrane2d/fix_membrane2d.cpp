@@ -27,7 +27,8 @@
 #include "variable.h"
 
 #include "allgather.h"
-#include "grain_size.h"
+#include "contact_scales.h"
+#include "stability_checks.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -41,9 +42,16 @@ enum { LEFT = 0, RIGHT = 1 };
 // a failed search is repeated with the band widened by this factor, at most this often
 constexpr double BAND_WIDENING = 2.5;
 constexpr int MAX_WIDENINGS = 2;
+// stability guards (doc/fix_membrane2d.md, "Stability guards")
+constexpr double TIME_STEP_LIMIT = 0.3;     // x sqrt(m_min/k_n)
+constexpr double CHAIN_STEP_LIMIT = 0.01;   // chain disk displacement per step / radius
+constexpr double INERTIAL_LIMIT = 1e-3;     // quasi-static bound (GDR MiDi 2004)
+constexpr bigint INERTIAL_WINDOW = 1000;    // steps over which the platen strain rate is averaged
+
 const char *side_name(int s) { return s == LEFT ? "left" : "right"; }
 
 enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
+constexpr size_t CHAIN_FIELDS = 5;   // tag, x, y, r, |v| dt / r
 
 std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
 
@@ -53,10 +61,11 @@ std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
-  thickness(1.0), band_width(-1.0), tolerance(-1.0), d50(0.0), detect_every(1),
+  thickness(1.0), band_width(-1.0), tolerance(-1.0), d50(0.0), density(0.0), detect_every(1),
   membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
   pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true),
-  redetections(0), failures(0), widenings(0), nmax_flag(0)
+  redetections(0), failures(0), widenings(0), chain_step{0.0, -1}, inertial(0.0), inertial_step0(-1),
+  inertial_height0(0.0), warned_chain_step(false), warned_inertial(false), nmax_flag(0)
 {
   if (domain->dimension != 2)
     error->all(FLERR, msg("requires dimension 2").c_str());
@@ -84,15 +93,15 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
       return v;
     };
     if (key == "pressure") {
-      parse_input(pressure_in, value, "pressure");
-      if (!pressure_in.varname && !(pressure_in.value >= 0.0))
+      pressure_in.parse(lmp, msg(""), "pressure", value);
+      if (!pressure_in.is_variable() && !(pressure_in.evaluate(lmp) >= 0.0))
         error->all(FLERR, msg(std::string("pressure must be >= 0, got '") + value + "'").c_str());
       have_pressure = true;
     } else if (key == "ylo") {
-      parse_input(ylo_in, value, "ylo");
+      ylo_in.parse(lmp, msg(""), "ylo", value);
       have_ylo = true;
     } else if (key == "yhi") {
-      parse_input(yhi_in, value, "yhi");
+      yhi_in.parse(lmp, msg(""), "yhi", value);
       have_yhi = true;
     } else if (key == "sides") {
       const std::string v = value;
@@ -167,7 +176,6 @@ FixMembrane2d::~FixMembrane2d()
   // after 'unfix' the chain disks are ordinary disks again, with their friction
   if (membrane_type > 0 && atom && atom->type)
     for (SideState &s : sides) switch_types(s.chain_tags, {});
-  for (Input *in : {&pressure_in, &ylo_in, &yhi_in}) delete[] in->varname;
   delete[] polyline_file;
   if (polyline_fp) fclose(polyline_fp);
   memory->destroy(vector_atom);
@@ -182,45 +190,13 @@ int FixMembrane2d::setmask()
 
 /* ---------------------------------------------------------------------- */
 
-void FixMembrane2d::parse_input(Input &in, const char *arg, const char *name)
-{
-  if (strncmp(arg, "v_", 2) == 0) {
-    in.varname = new char[strlen(arg + 2) + 1];
-    strcpy(in.varname, arg + 2);
-    return;
-  }
-  char *end = nullptr;
-  in.value = strtod(arg, &end);
-  if (*end != '\0' || !std::isfinite(in.value))
-    error->all(FLERR, msg(std::string(name) + " must be a finite number or v_name, got '" + arg + "'").c_str());
-}
-
-void FixMembrane2d::init_input(Input &in, const char *name)
-{
-  if (!in.varname) return;
-  in.ivar = input->variable->find(in.varname);
-  if (in.ivar < 0)
-    error->all(FLERR, msg(std::string("variable '") + in.varname + "' for " + name + " does not exist").c_str());
-  if (!input->variable->equalstyle(in.ivar))
-    error->all(FLERR, msg(std::string("variable '") + in.varname + "' for " + name + " must be equal-style").c_str());
-}
-
-double FixMembrane2d::evaluate(const Input &in)
-{
-  if (!in.varname) return in.value;
-  modify->clearstep_compute();
-  const double v = input->variable->compute_equal(in.ivar);
-  modify->addstep_compute(update->ntimestep + 1);
-  return v;
-}
-
 /* ---------------------------------------------------------------------- */
 
 void FixMembrane2d::init()
 {
-  init_input(pressure_in, "pressure");
-  init_input(ylo_in, "ylo");
-  init_input(yhi_in, "yhi");
+  pressure_in.init(lmp, msg(""), "pressure");
+  ylo_in.init(lmp, msg(""), "ylo");
+  yhi_in.init(lmp, msg(""), "yhi");
 
   if (membrane_type > 0) {
     // the chain is frictionless because its disks take a type whose friction is zero
@@ -238,67 +214,26 @@ void FixMembrane2d::init()
     error->warning(FLERR, msg("no 'frictionless' type given: chain disks keep their friction").c_str());
   }
 
-  compute_d50();
+  // D50 sets the default band width and gap tolerance; with the density, the inertial number
+  const GrainScales grains = group_grain_scales(lmp, groupbit, world);
+  if (grains.empty) error->all(FLERR, msg("the fix group has no atoms").c_str());
+  d50 = grains.d50;
+  density = grains.density;
   if (band_width <= 0.0) band_width = 4.0 * d50;
   if (tolerance < 0.0) tolerance = 0.02 * d50;
   force_detection = true;
-  check_time_step();
-}
-
-/* ----------------------------------------------------------------------
-   A linear contact k between disks of mass m oscillates with period
-   2 pi sqrt(m_eff / k); explicit integration needs dt well below
-   sqrt(m / k) of the lightest disk (the published set-up runs at 0.15 of
-   it). Warn above 0.3: chain disks are pushed by the membrane on top of
-   their contacts, and an unstable chain shows first as escapes.
-------------------------------------------------------------------------- */
-
-void FixMembrane2d::check_time_step()
-{
-  const int ntypes = atom->ntypes;
-  FixPropertyGlobal *kn = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
-      "kn", "property/global", "peratomtypepair", ntypes, ntypes, style, false));
-  if (!kn || !atom->rmass_flag) return;   // another contact model: no linear stiffness to check
-  double kmax = 0.0;
-  for (int i = 0; i < ntypes; i++)
-    for (int j = 0; j < ntypes; j++) kmax = std::max(kmax, kn->compute_array(i, j));
-  double mmin = 1e300;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) mmin = std::min(mmin, atom->rmass[i]);
-  MPI_Allreduce(MPI_IN_PLACE, &mmin, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (!(kmax > 0.0) || !(mmin < 1e300)) return;
-  const double tcrit = std::sqrt(mmin / kmax);
-  if (update->dt > 0.3 * tcrit && comm->me == 0) {
-    char buf[512];
-    snprintf(buf, sizeof(buf),
-             "Fix membrane2d: time step %g s is %.2f x sqrt(m_min/k_n) = %g s (m_min = %g kg, "
-             "k_n = %g N/m); above 0.3 the membrane chain may go unstable: use timestep <= %g",
-             update->dt, update->dt / tcrit, tcrit, mmin, kmax, 0.15 * tcrit);
-    error->warning(FLERR, buf);
-  }
-}
-
-/* ----------------------------------------------------------------------
-   D50 of the group (by area, i.e. by mass for disks of one density), for
-   the default band width and gap tolerance
-------------------------------------------------------------------------- */
-
-void FixMembrane2d::compute_d50()
-{
-  sendbuf.clear();
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) sendbuf.push_back(2.0 * atom->radius[i]);
-  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
-  if (recvbuf.empty()) error->all(FLERR, msg("the fix group has no atoms").c_str());
-  d50 = membrane::d50_by_area(recvbuf);
+  // chain disks are pushed by the membrane on top of their contacts: an
+  // unstable chain shows first as escapes
+  check_time_step(lmp, groupbit, world, msg(""), TIME_STEP_LIMIT);
+  inertial_step0 = -1;
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixMembrane2d::evaluate_platens()
 {
-  ylo = evaluate(ylo_in);
-  yhi = evaluate(yhi_in);
+  ylo = ylo_in.evaluate(lmp);
+  yhi = yhi_in.evaluate(lmp);
   if (!std::isfinite(ylo) || !std::isfinite(yhi) || !(ylo < yhi))
     error->all(FLERR, msg("the bottom platen (ylo = " + std::to_string(ylo) +
                           ") must be below the top platen (yhi = " + std::to_string(yhi) + ")").c_str());
@@ -562,13 +497,15 @@ void FixMembrane2d::gather_chain_positions(SideState &s)
   for (long tag : s.chain_tags) {
     const int i = atom->map(static_cast<int>(tag));
     if (i < 0 || i >= atom->nlocal) continue;
-    const double rec[4] = {static_cast<double>(tag), atom->x[i][0], atom->x[i][1], atom->radius[i]};
-    sendbuf.insert(sendbuf.end(), rec, rec + 4);
+    const double *v = atom->v[i];
+    const double rec[CHAIN_FIELDS] = {static_cast<double>(tag), atom->x[i][0], atom->x[i][1], atom->radius[i],
+                                      stability::step_fraction(v[0], v[1], update->dt, atom->radius[i])};
+    sendbuf.insert(sendbuf.end(), rec, rec + CHAIN_FIELDS);
   }
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
   const size_t n = s.chain_tags.size();
-  if (recvbuf.size() != 4 * n)
+  if (recvbuf.size() != CHAIN_FIELDS * n)
     error->all(FLERR, msg("a chain particle was lost (deleted or out of the box)").c_str());
   for (double v : recvbuf)
     if (!std::isfinite(v))
@@ -581,9 +518,10 @@ void FixMembrane2d::gather_chain_positions(SideState &s)
   }
   s.chain_disks.resize(n);
   for (size_t k = 0; k < n; k++) {
-    const double *rec = recvbuf.data() + 4 * k;
+    const double *rec = recvbuf.data() + CHAIN_FIELDS * k;
     const long tag = static_cast<long>(rec[0]);
     s.chain_disks[s.chain_position.at(tag)] = Disk{tag, rec[1], rec[2], rec[3]};
+    if (rec[4] > chain_step.fraction) chain_step = {rec[4], tag};
   }
 }
 
@@ -591,12 +529,13 @@ void FixMembrane2d::gather_chain_positions(SideState &s)
 
 void FixMembrane2d::post_force(int)
 {
-  pressure = evaluate(pressure_in);
+  pressure = pressure_in.evaluate(lmp);
   if (!(pressure >= 0.0) || !std::isfinite(pressure))
     error->all(FLERR, msg("pressure must be a finite number >= 0, got " + std::to_string(pressure) +
                           " at step " + std::to_string(update->ntimestep)).c_str());
   evaluate_platens();
 
+  chain_step = {0.0, -1};
   for (SideState &s : sides) {
     if (!s.active) continue;
     gather_chain_positions(s);
@@ -608,9 +547,66 @@ void FixMembrane2d::post_force(int)
     for (const Eigen::Vector2d &f : s.forces) s.total += f;
   }
   apply_forces();
+  check_chain_step();
+  check_inertial_number();
   update_flags();
   update_outputs();
   if (polyline_fp && update->ntimestep % polyline_every == 0) write_polylines();
+}
+
+/* ----------------------------------------------------------------------
+   A chain disk of a quasi-static test moves far less than 1e-3 of its
+   radius per step; 1 % means the membrane shoots it (a pressure jump, a
+   time step near the critical one): warn once, the value stays in f_ID[15]
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::check_chain_step()
+{
+  if (chain_step.fraction <= CHAIN_STEP_LIMIT || warned_chain_step) return;
+  warned_chain_step = true;
+  if (comm->me != 0) return;
+  char buf[512];
+  snprintf(buf, sizeof(buf),
+           "chain disk %ld moved %.3g of its radius in one step at step " BIGINT_FORMAT
+           " (limit %g; quasi-static chains move < 0.001): its speed jumped. Ramp the pressure "
+           "instead of jumping it, or reduce the time step or the loading rate (warned once; "
+           "f_ID[15] is the current value)",
+           chain_step.tag, chain_step.fraction, update->ntimestep, CHAIN_STEP_LIMIT);
+  error->warning(FLERR, msg(buf).c_str());
+}
+
+/* ----------------------------------------------------------------------
+   I = eps_rate d50 sqrt(rho / p), with the axial strain rate of the platens
+   averaged over INERTIAL_WINDOW steps and p = the membrane pressure (the
+   smaller principal stress, so I is an upper bound): warn once above 1e-3
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::check_inertial_number()
+{
+  const double height = yhi - ylo;
+  const bigint step = update->ntimestep;
+  if (inertial_step0 < 0 || step < inertial_step0) {
+    inertial_step0 = step;
+    inertial_height0 = height;
+    return;
+  }
+  if (step - inertial_step0 < INERTIAL_WINDOW) return;
+  const double rate = std::fabs(height - inertial_height0) /
+                      (inertial_height0 * static_cast<double>(step - inertial_step0) * update->dt);
+  inertial = pressure > 0.0 ? stability::inertial_number(rate, d50, density, pressure) : 0.0;
+  inertial_step0 = step;
+  inertial_height0 = height;
+  if (inertial <= INERTIAL_LIMIT || warned_inertial) return;
+  warned_inertial = true;
+  if (comm->me != 0) return;
+  char buf[512];
+  snprintf(buf, sizeof(buf),
+           "inertial number I = %.3g > %g at step " BIGINT_FORMAT " (axial strain rate %.3g 1/s of "
+           "the platens, d50 %.3g m, density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): "
+           "the test is not quasi-static; lower the loading rate below %.3g 1/s (warned once; "
+           "f_ID[16] is the current value)",
+           inertial, INERTIAL_LIMIT, step, rate, d50, density, pressure, rate * INERTIAL_LIMIT / inertial);
+  error->warning(FLERR, msg(buf).c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -683,6 +679,8 @@ void FixMembrane2d::update_outputs()
   v[FAILURES] = static_cast<double>(failures);
   v[PRESSURE] = pressure;
   v[WIDENINGS] = static_cast<double>(widenings);
+  v[CHAIN_STEP] = chain_step.fraction;
+  v[INERTIAL] = inertial;
 }
 
 double FixMembrane2d::compute_vector(int n)

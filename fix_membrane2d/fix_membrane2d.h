@@ -23,6 +23,7 @@ FixStyle(membrane2d,FixMembrane2d)
 
 #include "fix.h"
 #include "membrane_chain.h"
+#include "scalar_input.h"
 
 namespace LAMMPS_NS {
 
@@ -49,18 +50,11 @@ class FixMembrane2d : public Fix {
   enum VectorIndex {
     AREA = 0, MEAN_WIDTH, MID_WIDTH, CHAIN_LEFT, CHAIN_RIGHT, ESCAPED,
     FX_LEFT, FY_LEFT, FX_RIGHT, FY_RIGHT, REDETECTIONS, FAILURES, PRESSURE,
-    WIDENINGS, VECTOR_SIZE
+    WIDENINGS, CHAIN_STEP, INERTIAL, VECTOR_SIZE
   };
   enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };
 
  private:
-  // A value given as a number or as an equal-style variable v_name.
-  struct Input {
-    double value = 0.0;
-    char *varname = nullptr;
-    int ivar = -1;
-  };
-
   struct SideState {
     membrane::Side side;
     bool active = false;
@@ -78,11 +72,12 @@ class FixMembrane2d : public Fix {
     bool warned = false;
   };
 
-  Input pressure_in, ylo_in, yhi_in;
+  ScalarInput pressure_in, ylo_in, yhi_in;   // numbers or v_name
   double thickness;
   double band_width;       // <= 0: 4 x D50 of the group, set in init()
   double tolerance;        // < 0: 0.02 x D50
   double d50;
+  double density;          // group mass / group disk area [kg/m^2 per unit thickness]
   int detect_every;
   int membrane_type;       // 0: chain disks keep their friction
   bigint polyline_every;
@@ -102,17 +97,24 @@ class FixMembrane2d : public Fix {
   double vector_values[VECTOR_SIZE];
   bigint redetections, failures, widenings;
 
+  // stability guards
+  struct ChainStep {
+    double fraction;       // largest |v| dt / r of a chain disk this step
+    long tag;
+  } chain_step;
+  double inertial;         // last inertial number (0 before the first window)
+  bigint inertial_step0;   // start of the current strain-rate window (-1: none)
+  double inertial_height0;
+  bool warned_chain_step, warned_inertial;
+
   int nmax_flag;
   std::vector<double> sendbuf, recvbuf;
   std::vector<int> recvcounts, displs;
 
-  void parse_input(Input &in, const char *arg, const char *name);
-  void init_input(Input &in, const char *name);
-  double evaluate(const Input &in);
   void evaluate_platens();
   void check_platens();
-  void compute_d50();
-  void check_time_step();
+  void check_chain_step();
+  void check_inertial_number();
   void gather_bands(double width);
   void accept_chain(int side);
   void chain_lost(int side);

@@ -4,10 +4,10 @@
 
 #include <vector>
 
-namespace membrane {
+namespace stability {
 
 // D50 by mass of disks of one density: the diameter below which half of the
 // total disk area lies. Empty input -> 0.
 double d50_by_area(std::vector<double> diameters);
 
-}  // namespace membrane
+}  // namespace stability

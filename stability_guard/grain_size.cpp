@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace membrane {
+namespace stability {
 
 double d50_by_area(std::vector<double> diameters)
 {
@@ -18,4 +18,4 @@ double d50_by_area(std::vector<double> diameters)
   return diameters.back();
 }
 
-}  // namespace membrane
+}  // namespace stability

@@ -1,0 +1,105 @@
+#ifndef LIGGGHTS_MEMBRANE_CONTACT_SCALES_H
+#define LIGGGHTS_MEMBRANE_CONTACT_SCALES_H
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_property_global.h"
+#include "lammps.h"
+#include "modify.h"
+#include "update.h"
+
+#include "allgather.h"
+#include "grain_size.h"
+#include "math_const.h"
+#include "stability_checks.h"
+
+// The two numbers that set the contact time scale sqrt(m/k) of a linear
+// granular contact model: the largest normal stiffness of the per-type-pair
+// table `fix property/global kn peratomtypepair` (0 when there is none, e.g. a
+// Hertz model) and the smallest disk mass of a group over all ranks (0 when
+// the group is empty or atoms carry no per-atom mass).
+
+inline double max_normal_stiffness(LAMMPS_NS::LAMMPS *lmp, const char *caller)
+{
+  const int ntypes = lmp->atom->ntypes;
+  auto *kn = static_cast<LAMMPS_NS::FixPropertyGlobal *>(lmp->modify->find_fix_property(
+      "kn", "property/global", "peratomtypepair", ntypes, ntypes, caller, false));
+  if (!kn) return 0.0;
+  double kmax = 0.0;
+  for (int i = 0; i < ntypes; i++)
+    for (int j = 0; j < ntypes; j++) kmax = std::max(kmax, kn->compute_array(i, j));
+  return kmax;
+}
+
+inline double min_group_mass(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm world)
+{
+  LAMMPS_NS::Atom *atom = lmp->atom;
+  double mmin = 1e300;
+  if (atom->rmass_flag)
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & groupbit) mmin = std::min(mmin, atom->rmass[i]);
+  MPI_Allreduce(MPI_IN_PLACE, &mmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  return mmin < 1e300 ? mmin : 0.0;
+}
+
+// Grain scales of a group over all ranks: D50 by area (= by mass for one
+// density) and the mean density (group mass / disk area, per unit thickness).
+struct GrainScales {
+  double d50 = 0.0;
+  double density = 0.0;
+  bool empty = true;
+};
+
+inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm world)
+{
+  LAMMPS_NS::Atom *atom = lmp->atom;
+  std::vector<double> diameters, all;
+  std::vector<int> counts, displs;
+  double sums[2] = {0.0, 0.0};   // mass, area
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    diameters.push_back(2.0 * atom->radius[i]);
+    if (atom->rmass_flag) sums[0] += atom->rmass[i];
+    sums[1] += LAMMPS_NS::MathConst::MY_PI * atom->radius[i] * atom->radius[i];
+  }
+  allgather_doubles(world, diameters, all, counts, displs);
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
+  GrainScales g;
+  g.empty = all.empty();
+  g.d50 = stability::d50_by_area(all);
+  g.density = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+  return g;
+}
+
+// Warns (once, on rank 0) when the time step exceeds `limit` x sqrt(m_min/k_n)
+// of the group, naming the style through `prefix`, and proposes 0.15 of it
+// (the published set-up). Returns dt / sqrt(m_min/k_n), 0 when the contact
+// model has no linear stiffness table to check against.
+inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm world,
+                              const std::string &prefix, double limit)
+{
+  const double kmax = max_normal_stiffness(lmp, prefix.c_str());
+  const double mmin = min_group_mass(lmp, groupbit, world);
+  const double dt = lmp->update->dt;
+  const double ratio = stability::time_step_ratio(dt, mmin, kmax);
+  if (ratio > limit && lmp->comm->me == 0) {
+    char buf[512];
+    snprintf(buf, sizeof(buf),
+             "time step %g s is %.2f x sqrt(m_min/k_n) = %g s (m_min = %g kg, k_n = %g N/m); "
+             "above %g the contacts are poorly resolved and the run may go unstable: "
+             "use timestep <= %.2g", dt, ratio, stability::contact_time(mmin, kmax), mmin, kmax,
+             limit, stability::safe_time_step(0.15, mmin, kmax));
+    lmp->error->warning(FLERR, (prefix + buf).c_str());
+  }
+  return ratio;
+}
+
+#endif

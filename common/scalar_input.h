@@ -1,0 +1,62 @@
+#ifndef LIGGGHTS_MEMBRANE_SCALAR_INPUT_H
+#define LIGGGHTS_MEMBRANE_SCALAR_INPUT_H
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "error.h"
+#include "input.h"
+#include "lammps.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+// A style argument given as a number or as an equal-style variable v_name
+// (pressures, platen positions, strain rates). Errors name the style through
+// `prefix` ("Fix membrane2d: ") and the argument through `name`.
+class ScalarInput {
+ public:
+  void parse(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name, const char *arg)
+  {
+    const std::string text = arg;
+    if (text.compare(0, 2, "v_") == 0) {
+      varname_ = text.substr(2);
+      return;
+    }
+    char *end = nullptr;
+    value_ = strtod(arg, &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(value_))
+      lmp->error->all(FLERR, (prefix + name + " must be a finite number or v_name, got '" + text + "'").c_str());
+  }
+
+  // finds the variable (input scripts may define it after the style)
+  void init(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name)
+  {
+    if (varname_.empty()) return;
+    ivar_ = lmp->input->variable->find(const_cast<char *>(varname_.c_str()));
+    if (ivar_ < 0)
+      lmp->error->all(FLERR, (prefix + "variable '" + varname_ + "' for " + name + " does not exist").c_str());
+    if (!lmp->input->variable->equalstyle(ivar_))
+      lmp->error->all(FLERR, (prefix + "variable '" + varname_ + "' for " + name + " must be equal-style").c_str());
+  }
+
+  // computes referenced by the variable are invoked on demand, as fix ave/time does
+  double evaluate(LAMMPS_NS::LAMMPS *lmp) const
+  {
+    if (varname_.empty()) return value_;
+    lmp->modify->clearstep_compute();
+    const double v = lmp->input->variable->compute_equal(ivar_);
+    lmp->modify->addstep_compute(lmp->update->ntimestep + 1);
+    return v;
+  }
+
+  bool is_variable() const { return !varname_.empty(); }
+
+ private:
+  double value_ = 0.0;
+  std::string varname_;
+  int ivar_ = -1;
+};
+
+#endif

@@ -1,0 +1,62 @@
+/* ----------------------------------------------------------------------
+   fix stability/guard: watches a 2D granular run every N steps and stops
+   it with an error that says what to change once it has gone unstable
+   (non-finite values, a disk moving a large fraction of its radius per
+   step, lost atoms); warns once each when the time step, the overlaps or
+   the inertial number leave their safe range. See
+   doc/fix_stability_guard.md. Measures in stability_checks.h (no
+   LIGGGHTS); this class gathers them over the ranks and words them.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(stability/guard,FixStabilityGuard)
+
+#else
+
+#ifndef LMP_FIX_STABILITY_GUARD_H
+#define LMP_FIX_STABILITY_GUARD_H
+
+#include "fix.h"
+#include "scalar_input.h"
+
+namespace LAMMPS_NS {
+
+class FixStabilityGuard : public Fix {
+ public:
+  FixStabilityGuard(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void end_of_step();
+  double compute_vector(int);
+
+  // global vector layout (1-based in input scripts: f_ID[k]); values of the last check
+  enum VectorIndex { STEP_FRACTION = 0, OVERLAP, TIME_STEP_RATIO, INERTIAL, LOST, WARNINGS, VECTOR_SIZE };
+
+ private:
+  double move_limit;        // error: a disk moves more than this x its radius in one step
+  double overlap_limit;     // warning: overlap / smaller radius
+  double time_step_limit;   // warning: dt / sqrt(m_min / k_n)
+  double inertial_limit;    // warning: inertial number
+  bool check_inertial;
+  ScalarInput rate_in, pressure_in;
+
+  double d50, density;      // of the group, for the inertial number
+  bigint natoms0;           // group atoms at setup
+  double values[VECTOR_SIZE];
+  bool warned_overlap, warned_inertial;
+  int warnings;
+
+  void check_atoms();
+  void check_lost_atoms();
+  void check_overlaps();
+  void check_inertial_number();
+  bigint count_group_atoms();
+  void warn(const std::string &text);
+};
+
+}
+
+#endif
+#endif

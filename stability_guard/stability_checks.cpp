@@ -1,0 +1,71 @@
+#include "stability_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace stability {
+
+double contact_time(double mass_min, double stiffness_max)
+{
+  if (!(mass_min > 0.0) || !(stiffness_max > 0.0)) return 0.0;
+  return std::sqrt(mass_min / stiffness_max);
+}
+
+double time_step_ratio(double dt, double mass_min, double stiffness_max)
+{
+  const double t = contact_time(mass_min, stiffness_max);
+  return t > 0.0 ? dt / t : 0.0;
+}
+
+double safe_time_step(double fraction, double mass_min, double stiffness_max)
+{
+  return fraction * contact_time(mass_min, stiffness_max);
+}
+
+double inertial_number(double strain_rate, double diameter, double density, double pressure)
+{
+  if (!(pressure > 0.0)) return std::numeric_limits<double>::infinity();
+  return std::fabs(strain_rate) * diameter * std::sqrt(density / pressure);
+}
+
+double step_fraction(double vx, double vy, double dt, double radius)
+{
+  return std::hypot(vx, vy) * dt / radius;
+}
+
+double overlap_fraction(double dx, double dy, double ri, double rj)
+{
+  return (ri + rj - std::hypot(dx, dy)) / std::min(ri, rj);
+}
+
+namespace {
+
+bool finite3(const double *a)
+{
+  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
+}
+
+}  // namespace
+
+AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
+                    const double *const *f, const double *radius, const int *mask, int groupbit,
+                    double dt)
+{
+  AtomScan s;
+  for (std::size_t i = 0; i < n; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    if (!finite3(x[i]) || !finite3(v[i]) || !finite3(f[i])) {
+      if (s.nonfinite++ == 0) s.first_nonfinite = static_cast<long>(i);
+      continue;
+    }
+    const double frac = step_fraction(v[i][0], v[i][1], dt, radius[i]);
+    if (s.argmax_step < 0 || frac > s.max_step_fraction) {
+      s.max_step_fraction = frac;
+      s.argmax_step = static_cast<long>(i);
+    }
+  }
+  return s;
+}
+
+}  // namespace stability

@@ -1,0 +1,51 @@
+#pragma once
+// Numerical-stability measures of an explicit DEM step (no LIGGGHTS), shared by
+// fix stability/guard and fix membrane2d. Each returns a dimensionless number
+// whose safe range is stated where it is defined, so a style only compares and
+// words the message.
+
+#include <cstddef>
+
+namespace stability {
+
+// sqrt(m/k): the time scale of a linear contact k on the lightest disk m. Its
+// period is 2 pi sqrt(m_eff/k); velocity Verlet is stable below dt = 2 sqrt(m_eff/k)
+// for one spring, lower with several contacts per disk. The published set-up
+// runs at 0.15 of it; above 0.3 we warn. Non-positive input -> 0.
+double contact_time(double mass_min, double stiffness_max);
+
+// dt in units of contact_time(); 0 when the contact time is unknown.
+double time_step_ratio(double dt, double mass_min, double stiffness_max);
+
+// The largest dt at which time_step_ratio() stays at or below `fraction`.
+double safe_time_step(double fraction, double mass_min, double stiffness_max);
+
+// Inertial number I = |rate| d sqrt(rho / p) of a sheared granular sample
+// (GDR MiDi 2004): quasi-static below 1e-3. p <= 0 -> +inf.
+double inertial_number(double strain_rate, double diameter, double density, double pressure);
+
+// Distance a disk moves in one step, as a fraction of its radius: |v| dt / r
+// (2D, v = (vx, vy)). A quasi-static test moves disks well below 1e-3 of their
+// radius per step; several percent means the contacts are no longer resolved.
+double step_fraction(double vx, double vy, double dt, double radius);
+
+// Overlap of two disks as a fraction of the smaller radius: (ri + rj - |xi - xj|)
+// / min(ri, rj); negative when they do not touch.
+double overlap_fraction(double dx, double dy, double ri, double rj);
+
+// One pass over the owned atoms of a group: the first non-finite position,
+// velocity or force, and the disk that moves the largest fraction of its radius
+// per step. Arrays as LIGGGHTS keeps them (x[i][0..2] etc.); `in_group` masks
+// the atoms to look at (mask[i] & groupbit).
+struct AtomScan {
+  long nonfinite = 0;            // atoms with a non-finite x, v or f
+  long first_nonfinite = -1;     // index of the first of them, -1 if none
+  double max_step_fraction = 0;  // max |v| dt / r over finite atoms
+  long argmax_step = -1;         // its index, -1 if no atom
+};
+
+AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
+                    const double *const *f, const double *radius, const int *mask, int groupbit,
+                    double dt);
+
+}  // namespace stability
