@@ -360,6 +360,9 @@ def execute(run, args, restart):
     m = re.search(r"escaped (\S+) chain failures (\S+)", meta["done_line"])
     if m:
         meta["escaped"], meta["chain_failures"] = float(m.group(1)), float(m.group(2))
+    m = re.search(r"detections (\S+) changing the chain (\S+)", meta["done_line"])
+    if m:   # per side: how often a detection changed the chain (what skipping it would risk)
+        meta["detections"], meta["chain_changes"] = float(m.group(1)), float(m.group(2))
     json.dump(meta, open(metafile, "w"), indent=1)
     meta["executed_now"] = True
     run.meta = meta
@@ -491,6 +494,8 @@ def row_for(sweep, run, ref, ref0, args):
                ms_per_step=(1e3 * m["loop_time_s"] / m["steps"]) if m.get("steps") else float("nan"),
                I_max=num(c.get("I_max")), escaped=m.get("escaped", ""),
                chain_failures=m.get("chain_failures", ""),
+               chain_change_fraction=(m["chain_changes"] / (2 * m["detections"]))
+               if m.get("detections") else "",
                peak_ratio=num(c.get("peak_ratio")), ea_peak=num(c.get("ea_peak")),
                E=num(c.get("E")), phi=num(c.get("phi_peak")), psi=num(c.get("psi")))
     row.update(compare(run, ref, args))
@@ -508,6 +513,7 @@ GATE_KEYS = ["rms_ratio", "rms_ev", "d_peak"]
 CSV_KEYS = ["sweep", "case", "seed", "rate", "dt", "every", "damping", "ranks", "reference",
             "is_reference", "status",
             "symptom", "steps", "wall_s", "cpu_s", "ms_per_step", "I_max", "escaped", "chain_failures",
+            "chain_change_fraction",
             "peak_ratio", "ea_peak", "E", "phi", "psi"] + ERR_KEYS + \
            ["mean_ratio", "max_a", "max_Cn", "max_gsi", "ea_compared", "rms_ratio_vs_case_ref",
             "within_scatter", "speedup", "efficiency", "oversubscribed"]
@@ -989,6 +995,12 @@ def main(argv):
         notes.append(f"- Membrane 'SHEAR done' lines: escaped disks at the end "
                      f"{', '.join(f'{x:g}' for x in esc)}; chain failures "
                      f"{', '.join(f'{x:g}' for x in cf_)} (per run: the CSV).")
+        frac = [(r.every, r.rate, r.meta["chain_changes"] / (2 * r.meta["detections"]))
+                for r in mem if r.meta.get("detections")]
+        if frac:
+            notes.append("- Share of chain detections that changed a side's chain or escapees "
+                         "(what skipping detections risks; per side, settling included): "
+                         + "; ".join(f"every {e} at {rt:g} /s: {100 * x:.1f} %" for e, rt, x in sorted(frac)))
     fast = sorted({r.rate for r in ok_runs if r.curves and r.curves.get("I_max", 0) > 1e-3})
     if fast:
         notes.append(f"- I_max > 1e-3 (not quasi-static by the spec's criterion) at rates "

@@ -64,7 +64,7 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   thickness(1.0), band_width(-1.0), tolerance(-1.0), d50(0.0), density(0.0), detect_every(1),
   membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
   pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true),
-  redetections(0), failures(0), widenings(0), chain_step{0.0, -1}, inertial(0.0), inertial_step0(-1),
+  redetections(0), failures(0), widenings(0), changes(0), chain_step{0.0, -1}, inertial(0.0), inertial_step0(-1),
   inertial_height0(0.0), warned_chain_step(false), warned_inertial(false), nmax_flag(0)
 {
   if (domain->dimension != 2)
@@ -396,6 +396,7 @@ void FixMembrane2d::accept_chain(int k)
 {
   SideState &s = sides[k];
   const std::vector<long> old_tags = s.chain_tags;
+  const std::vector<long> old_escaped = s.escaped_tags;
   s.chain_tags.clear();
   s.chain_position.clear();
   for (int idx : result.chain) {
@@ -408,6 +409,8 @@ void FixMembrane2d::accept_chain(int k)
     s.escaped_tags.push_back(s.band[idx].tag);
     s.escaped_radius.push_back(s.band[idx].r);
   }
+  // how often a detection changes anything: what skipping detections would risk
+  if (s.chain_tags != old_tags || s.escaped_tags != old_escaped) changes++;
   if (membrane_type > 0) {
     // the type a disk has when it joins the chain, as seen by every rank
     for (int idx : result.chain)
@@ -681,6 +684,7 @@ void FixMembrane2d::update_outputs()
   v[WIDENINGS] = static_cast<double>(widenings);
   v[CHAIN_STEP] = chain_step.fraction;
   v[INERTIAL] = inertial;
+  v[CHANGES] = static_cast<double>(changes);
 }
 
 double FixMembrane2d::compute_vector(int n)

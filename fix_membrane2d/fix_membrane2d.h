@@ -50,7 +50,7 @@ class FixMembrane2d : public Fix {
   enum VectorIndex {
     AREA = 0, MEAN_WIDTH, MID_WIDTH, CHAIN_LEFT, CHAIN_RIGHT, ESCAPED,
     FX_LEFT, FY_LEFT, FX_RIGHT, FY_RIGHT, REDETECTIONS, FAILURES, PRESSURE,
-    WIDENINGS, CHAIN_STEP, INERTIAL, VECTOR_SIZE
+    WIDENINGS, CHAIN_STEP, INERTIAL, CHANGES, VECTOR_SIZE
   };
   enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };
 
@@ -96,6 +96,7 @@ class FixMembrane2d : public Fix {
   bool force_detection;
   double vector_values[VECTOR_SIZE];
   bigint redetections, failures, widenings;
+  bigint changes;          // detections that changed a chain or its escapees (per side)
 
   // stability guards
   struct ChainStep {
