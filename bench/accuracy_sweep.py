@@ -2,7 +2,7 @@
 """Run time against error of the 2D DEM biaxial test (examples/biaxial).
 
     /usr/bin/python3 bench/accuracy_sweep.py [--scale 0.5] [--strain 0.05] [--jobs 2]
-        [--rates 0.00125,0.0025,0.005,0.01,0.02,0.04,0.08] [--everys 1,2,5,10,50]
+        [--rates 0.00125,0.0025,0.005,0.01,0.02,0.04,0.08] [--everys auto,1,2,5,10,50]
         [--dts 1e-4,5e-5,2e-4,4e-4,8e-4] [--seeds 12345,54321] [--workdir out/accuracy_sweep]
         [--dampings viscous:500,viscous:100,viscous:2000,viscous:5000,local:0.1,local:0.3,local:0.7]
         [--damping-rates R1,R2] [--ranks 1,2,4] [--sweeps rate,every,dt,seed[,damping,ranks]]
@@ -13,7 +13,8 @@ ranks sweep excepted), at most --jobs runs at a time, and compares every run wit
 the reference run of its sweep:
 
   rate     both cases, -var rate R; reference = the slowest rate of --rates
-  every    membrane, -var every N at --default-rate; reference = the smallest N
+  every    membrane, -var every auto|N at --default-rate; reference = the smallest N (1:
+           a detection every step); auto must equal it exactly (same chains every step)
   dt       rigid, -var dt DT at --default-rate; reference = --default-dt
   seed     the reference (slowest rate) of both cases repeated on the second seed:
            the sample-to-sample scatter; an error below it is noise
@@ -92,6 +93,16 @@ def floats(text):
     return [float(w) for w in text.split(",") if w.strip()]
 
 
+def everys(text):
+    """'auto,1,2' -> ['auto', 1, 2]"""
+    return [w.strip() if w.strip() == "auto" else int(w) for w in text.split(",") if w.strip()]
+
+
+def every_key(e):
+    """auto first, then the intervals in order"""
+    return (0, 0) if e == "auto" else (1, int(e))
+
+
 def ints(text):
     return [int(w) for w in text.split(",") if w.strip()]
 
@@ -161,8 +172,11 @@ def parse_args(argv):
     p.add_argument("--strain", type=float, default=0.05, help="final axial strain (0.05)")
     p.add_argument("--rates", type=floats, default=floats("0.00125,0.0025,0.005,0.01,0.02,0.04,0.08"),
                    help="loading rates [1/s]; the slowest is the reference")
-    p.add_argument("--everys", type=ints, default=ints("1,2,5,10,50"),
-                   help="membrane chain re-detection intervals; the smallest is the reference")
+    p.add_argument("--everys", type=everys, default=everys("auto,1,2,5,10,50"),
+                   help="membrane chain detection settings (auto or N); the smallest N is the "
+                        "reference; the other sweeps use --default-every")
+    p.add_argument("--default-every", default="auto",
+                   help="membrane 'every' of all sweeps but the every sweep (the examples' default)")
     p.add_argument("--dts", type=floats, default=floats("1e-4,5e-5,2e-4,4e-4,8e-4"),
                    help="time steps of the rigid case (reference = --default-dt)")
     p.add_argument("--default-rate", type=float, default=0.01,
@@ -739,11 +753,12 @@ def main(argv):
     args.default_damping = {c: script_damping(args.scripts[c]) for c in args.scripts}
     seed0 = args.seeds[0]
     ref_rate, rate_d, dt_d = min(args.rates), args.default_rate, args.default_dt
-    every_ref = min(args.everys)
+    every_ref = min([e for e in args.everys if e != "auto"] or [1])
+    every_d = args.default_every if args.default_every == "auto" else int(args.default_every)
 
     runs = {}
 
-    def get(case, seed, rate, dt=dt_d, every=every_ref, damping=None, ranks=1):
+    def get(case, seed, rate, dt=dt_d, every=every_d, damping=None, ranks=1):
         r = Run(case, seed, rate, dt, every if case == "membrane" else 0, args,
                 damping=damping, ranks=ranks)
         return runs.setdefault(r.key, r)
@@ -757,7 +772,7 @@ def main(argv):
                 plan.append(("rate", get(c, seed0, rate), ref0[c]))
     if "every" in args.sweeps:
         ref = get("membrane", seed0, rate_d, every=every_ref)
-        for ev in sorted(args.everys):
+        for ev in sorted(args.everys, key=every_key):
             plan.append(("every", get("membrane", seed0, rate_d, every=ev), ref))
     if "dt" in args.sweeps:
         ref = get("rigid", seed0, rate_d, dt=dt_d)
@@ -1000,7 +1015,8 @@ def main(argv):
         if frac:
             notes.append("- Share of chain detections that changed a side's chain or escapees "
                          "(what skipping detections risks; per side, settling included): "
-                         + "; ".join(f"every {e} at {rt:g} /s: {100 * x:.1f} %" for e, rt, x in sorted(frac)))
+                         + "; ".join(f"every {e} at {rt:g} /s: {100 * x:.1f} %"
+                                   for e, rt, x in sorted(frac, key=lambda t: (every_key(t[0]), t[1]))))
     fast = sorted({r.rate for r in ok_runs if r.curves and r.curves.get("I_max", 0) > 1e-3})
     if fast:
         notes.append(f"- I_max > 1e-3 (not quasi-static by the spec's criterion) at rates "

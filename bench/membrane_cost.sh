@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Step time of the 8 404-disk biaxial shear with: no lateral boundary (platens
-# only), fix membrane2d every 1 and every 10, and rigid servo side walls, on 1
+# only), fix membrane2d every 1, every auto (the default: the same chains as
+# every 1) and every 10, and rigid servo side walls, on 1
 # and 2 ranks. Prints the times and the ratios to 'none', measured in one run.
 # 'none' lets the sample spread sideways, so its contacts (the pair work) differ
 # from a confined sample; 'membrane kept' (fix membrane2d with the chain found
@@ -17,7 +18,7 @@ exe=$(readlink -f ../build/app/liggghts-membrane)
 csv=membrane_cost.csv
 echo "ranks,lateral,every,ms_per_step" > $csv
 for np in 1 2; do
-  for variant in "none 0 1" "kept 1 1000000000" "membrane 1 1" "membrane 1 10" "rigid 2 1"; do
+  for variant in "none 0 1" "kept 1 1000000000" "membrane 1 1" "membrane 1 auto" "membrane 1 10" "rigid 2 1"; do
     set -- $variant
     line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.step_cost -log none \
              -var restart "$restart" -var lateral "$2" -var every "$3" -var nsteps "$nsteps" \

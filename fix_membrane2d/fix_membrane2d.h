@@ -66,6 +66,9 @@ class FixMembrane2d : public Fix {
     std::vector<membrane::Disk> band;    // gathered at the last detection
     std::vector<int> band_type;          // type of each band disk
     std::vector<membrane::Disk> chain_disks;  // current positions, chain order
+    membrane::DetectionWatch watch;            // every auto: what the last search depended on
+    std::vector<membrane::Disk> watch_band;   // the band it searched, as it was then
+    std::vector<membrane::Disk> now;          // the same, watched disks at their current positions
     membrane::Polyline polyline;
     std::vector<Eigen::Vector2d> forces;
     Eigen::Vector2d total{0.0, 0.0};
@@ -78,7 +81,7 @@ class FixMembrane2d : public Fix {
   double tolerance;        // < 0: 0.02 x D50
   double d50;
   double density;          // group mass / group disk area [kg/m^2 per unit thickness]
-  int detect_every;
+  int detect_every;        // 0: auto (when the chain can have changed)
   int membrane_type;       // 0: chain disks keep their friction
   bigint polyline_every;
   char *polyline_file;
@@ -91,6 +94,17 @@ class FixMembrane2d : public Fix {
   std::map<long, int> observed_type;   // chain tag -> its own (not frictionless) type
   std::vector<int> slice_of_atom;      // band slice of each local disk
   std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
+
+  // disks whose positions are gathered every step: chain disks and watched disks
+  struct WatchEntry {
+    int chain_index[2] = {-1, -1};     // position in sides[k].chain_disks
+    int band_index[2] = {-1, -1};      // index in sides[k].now
+  };
+  std::unordered_map<long, WatchEntry> watch_entries;
+  std::vector<long> watch_tags;
+  size_t nchain_watched = 0;
+  double band_displacement = 0.0;      // largest band-disk displacement since the detection
+  double ylo_detected = 0.0, yhi_detected = 0.0;
 
   double pressure, ylo, yhi;
   bool force_detection;
@@ -107,6 +121,7 @@ class FixMembrane2d : public Fix {
   bigint inertial_step0;   // start of the current strain-rate window (-1: none)
   double inertial_height0;
   bool warned_chain_step, warned_inertial;
+  bool inertial_above_before;   // the previous window was above the limit
 
   int nmax_flag;
   std::vector<double> sendbuf, recvbuf;
@@ -122,7 +137,9 @@ class FixMembrane2d : public Fix {
   void detect_chains();
   void find_chain(int side);
   void switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags);
-  void gather_chain_positions(SideState &s);
+  void build_watch_list();
+  void gather_watched();
+  bool chains_may_have_changed();
   void apply_forces();
   void update_flags();
   void update_outputs();

@@ -29,8 +29,6 @@ bool finite_disk(const Disk& d) {
   return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.r);
 }
 
-bool touches_bottom(const Disk& d, Platens p, double tol) { return d.y - d.r - p.ylo <= tol; }
-bool touches_top(const Disk& d, Platens p, double tol) { return p.yhi - (d.y + d.r) <= tol; }
 
 }  // namespace
 
@@ -121,11 +119,10 @@ const int* ChainFinder::neighbours(int i, int& count) const {
             const Disk& b = disks[j];
             const double dx = b.x - a.x, dy = b.y - a.y, d2 = dx * dx + dy * dy;
             const double reach = a.r + b.r + tol_;
-            // Cheap reject with a margin; the exact test below is the definition.
+            // Cheap reject with a margin; link_from is the definition (it also
+            // refuses coincident centres: no direction to walk along).
             if (reach < 0.0 || d2 > reach * reach * (1.0 + 1e-9)) continue;
-            const double dist = std::sqrt(d2);
-            // Coincident centres give no direction to walk along.
-            if (dist > 0.0 && dist - a.r - b.r <= tol_) nb_pool_.push_back(j);
+            if (link_from(a, b, tol_)) nb_pool_.push_back(j);
           }
         }
       }

@@ -99,6 +99,49 @@ class ChainFinder {
   int nbin_ = 1;
 };
 
+// The relations a chain search depends on, as the search tests them: a
+// directed link a -> b (a's neighbour list holds b), and disks touching the
+// platens. Exposed so that the detection watch (below) uses the very same
+// floating-point expressions.
+inline bool link_from(const Disk& a, const Disk& b, double tol) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double dist = std::sqrt(dx * dx + dy * dy);
+  return dist > 0.0 && dist - a.r - b.r <= tol;
+}
+inline bool touches_bottom(const Disk& d, Platens p, double tol) { return d.y - d.r - p.ylo <= tol; }
+inline bool touches_top(const Disk& d, Platens p, double tol) { return p.yhi - (d.y + d.r) <= tol; }
+
+// When may a detection be skipped? A ChainFinder result depends only on (i) the
+// links of the band graph, (ii) which disks touch each platen, (iii) the x order
+// of the start candidates ahead of the start disk; the walk's angular choices and
+// the escapee test cannot change while these hold (two neighbours of a disk
+// cannot swap their angular order, nor a disk cross a chain segment, without
+// overlapping a chain disk, which is a new link). Relations within `budget`
+// of their threshold at the detection are watched exactly every step; every
+// other one needs a relative displacement of at least `budget` to flip, which
+// the caller bounds by the largest displacement of a band disk (and of the
+// platens) since the detection. Disks entering the band are not watched: the
+// band reaches 4 D50 inside the outermost disks and the walk stays at the edge.
+struct DetectionWatch {
+  struct Pair { int i, j; bool ij, ji; };          // link_from(i, j), link_from(j, i)
+  struct PlatenContact { int i; bool bottom, touching; };
+  struct Ahead { int start, other; };               // start stays ahead of other in x
+  double budget = 0.0;
+  bool always = true;       // the result cannot be watched: detect every step
+  std::vector<Pair> pairs;
+  std::vector<PlatenContact> platen_contacts;
+  std::vector<Ahead> ahead;
+  std::vector<int> disks;   // every band index the relations refer to, ascending
+};
+
+// Records the watch of a successful result `r` of ChainFinder::find on `band`.
+void watch_detection(const std::vector<Disk>& band, const ChainResult& r, Platens platens, double tol, double budget, DetectionWatch& out);
+
+// True when a watched relation differs at the positions in `now` (indexed like
+// the band; only the entries of watch.disks are read) and platens `platens`.
+bool watched_relation_changed(const DetectionWatch& watch, const std::vector<Disk>& now,
+                              Side side, Platens platens, double tol);
+
 // P_0 = (x_first, ylo), P_k = contact point of chain disks k-1 and k (0-based),
 // P_n = (x_last, yhi). Used after find() and on steps where a kept chain is
 // re-evaluated at current positions. Empty chain -> empty polyline.

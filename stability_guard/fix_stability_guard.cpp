@@ -57,7 +57,7 @@ ValueTag max_over_ranks(ValueTag local, MPI_Comm world)
 
 FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
-  move_limit(0.05), overlap_limit(0.05), time_step_limit(0.3), inertial_limit(1e-3),
+  move_limit(0.05), overlap_limit(0.1), time_step_limit(0.3), inertial_limit(1e-3),
   check_inertial(false), d50(0.0), density(0.0), natoms0(0),
   warned_overlap(false), warned_inertial(false), warnings(0)
 {

@@ -10,6 +10,8 @@ ranks. Checks physical sanity that a broken example would fail:
   Love-Weber sigma_xx inside the membrane within 15 % of it on average;
 - the stress ratio starts at 1 (+-0.1) and rises above 1.3;
 - the rigid and the membrane runs of the same sample differ;
+- the membrane run with 'every auto' (the default) and with a detection at
+  every step give identical output tables;
 - the stability guards stay quiet: no warning from fix stability/guard (time
   step, overlaps, inertial number) or from fix membrane2d (time step, chain
   speed, inertial number, lost chain) in any of the three runs.
@@ -99,6 +101,18 @@ def main():
                       "membrane: mean Love-Weber sigma_xx inside %.0f Pa within 15 %% of 100 kPa" % mean)
                 esc = [l for l in out.splitlines() if l.startswith("SHEAR done")]
                 check(bool(esc) and "chain failures 0" in esc[0], "membrane: no chain failure")
+        # every auto (the default) skips detections only when the chain cannot have changed:
+        # the same run with a detection at every step must give the very same numbers
+        table_every1 = os.path.join(work, "shear_membrane_every1.txt")
+        out1 = run(mpi + ["-in", "in.shear_membrane", "-var", "restart", restart, "-var", "eatarget", "0.01",
+                          "-var", "every", "1", "-var", "out", table_every1, "-var", "ndump", "100000",
+                          "-log", "none"], os.path.join(work, "membrane_every1.txt"))
+        rows_auto = [l for l in open(os.path.join(work, "shear_membrane.txt")) if not l.startswith("#")]
+        rows_every1 = [l for l in open(table_every1) if not l.startswith("#")]
+        check(len(rows_auto) > 5 and rows_auto == rows_every1,
+              "membrane: every auto gives the same output, to the last digit, as a detection every step")
+        done = [l.split("detections")[1] for l in (out, out1) for l in l.splitlines() if l.startswith("SHEAR done")]
+        check(len(done) == 2, "membrane: detections reported (auto / every 1: %s)" % " / ".join(d.strip() for d in done))
         n = min(len(runs["rigid"]["s1"]), len(runs["membrane"]["s1"]))
         diff = max(abs(a - b) for a, b in zip(runs["rigid"]["s1"][1:n], runs["membrane"]["s1"][1:n]))
         check(diff > 1e3, "rigid and membrane runs differ (max |s1 difference| %.0f Pa)" % diff)
