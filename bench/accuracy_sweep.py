@@ -315,6 +315,28 @@ def loop_times(logfile):
     return tsum, nsum
 
 
+def time_split(logfile):
+    """Percent of the longest run's loop time in LIGGGHTS' categories (Pair, Neigh,
+    Comm, Outpt, Other; fixes such as the moving meshes and fix membrane2d are in
+    Other), or {} when the log is missing."""
+    best, split, current, steps = -1, {}, None, -1
+    if not os.path.exists(logfile):
+        return {}
+    for line in open(logfile, errors="replace"):
+        m = re.match(r"Loop time of ([-+.\deE]+) on (\d+) procs for (\d+) steps", line)
+        if m:
+            steps = int(m.group(3))
+            current = {} if steps > best else None
+            if current is not None:
+                best = steps
+            continue
+        m = re.match(r"(Pair|Neigh|Comm|Outpt|Other)\s+time \(%\) = \S+ \(([-+.\deE]+)\)", line)
+        if m and current is not None:
+            current[m.group(1)] = float(m.group(2))
+            split = current
+    return split
+
+
 def symptom(screen):
     """The first ERROR/WARNING-of-note line, else the last non-empty line."""
     lines = [l.strip() for l in open(screen, errors="replace")] if os.path.exists(screen) else []
@@ -328,14 +350,23 @@ def symptom(screen):
     return nonempty[-1][:200] if nonempty else "no output"
 
 
+def cached_meta(metafile, params, done_status, retry_failed):
+    """The meta.json of an earlier run with the same parameters, or None: a run that
+    ended in done_status is reused, a failed one too unless retry_failed."""
+    if not os.path.exists(metafile):
+        return None
+    meta = json.load(open(metafile))
+    if meta.get("params") == params and (meta["status"] == done_status or not retry_failed):
+        return meta
+    return None
+
+
 def execute(run, args, restart):
     """Run (or reuse) one shear run; fills run.meta."""
     metafile = os.path.join(run.dir, "meta.json")
-    if os.path.exists(metafile):
-        meta = json.load(open(metafile))
-        if meta.get("params") == run.params and (meta["status"] == "ok" or not args.retry_failed):
-            run.meta = meta
-            return run
+    run.meta = cached_meta(metafile, run.params, "ok", args.retry_failed)
+    if run.meta is not None:
+        return run
     if args.report_only:
         run.meta = dict(params=run.params, status="not run", symptom="not run")
         return run
@@ -501,6 +532,7 @@ def row_for(sweep, run, ref, ref0, args):
                damping=damping_spec(run.damping), default_damping=int(run.default_damping),
                ranks=run.ranks,
                cores=m.get("cores") or os.cpu_count(), loadavg_start=m.get("loadavg_start"),
+               time_split=time_split(os.path.join(run.dir, "log.shear")),
                reference=ref.name,
                is_reference=int(run is ref), status=m["status"], symptom=m.get("symptom", ""),
                steps=m.get("steps", ""), wall_s=m.get("loop_time_s", float("nan")),
@@ -959,6 +991,9 @@ def main(argv):
                       f"{fmt(r['rms_ratio_vs_case_ref'])}")
             if lavg is not None:
                 t += f" (load average {lavg:.1f} at its start)"
+            split = r.get("time_split")
+            if split:
+                t += " [time: " + ", ".join(f"{k} {v:.0f} %" for k, v in split.items()) + "]"
             parts.append(t)
         ranks_par.append(f"- {case}: " + "; ".join(parts) + ".")
     if ranks_par:

@@ -209,11 +209,9 @@ def sample_geometry(data, ftot):
 def prepare(s, args):
     """Prepare sample s (or reuse it); fills s.meta. Never raises for a failed run."""
     metafile = os.path.join(s.dir, "meta.json")
-    if os.path.exists(metafile):
-        meta = json.load(open(metafile))
-        if meta.get("params") == s.params and (meta["status"] == "ok" or not args.retry_failed):
-            s.meta = meta
-            return s
+    s.meta = acc.cached_meta(metafile, s.params, "ok", args.retry_failed)
+    if s.meta is not None:
+        return s
     if args.report_only:
         s.meta = dict(params=s.params, status="not run", symptom="not run")
         return s
@@ -296,11 +294,9 @@ class Run:
 def execute(run, args):
     """Run (or reuse) one run; fills run.meta (what the process did)."""
     metafile = os.path.join(run.dir, "meta.json")
-    if os.path.exists(metafile):
-        meta = json.load(open(metafile))
-        if meta.get("params") == run.params and (meta["status"] == "finished" or not args.retry_failed):
-            run.meta = meta
-            return run
+    run.meta = acc.cached_meta(metafile, run.params, "finished", args.retry_failed)
+    if run.meta is not None:
+        return run
     if not run.sample.ok and run.sample.meta.get("status") != "not run":
         run.meta = dict(params=run.params, status="failed", error="", warnings=[],
                         symptom=f"sample {run.sample.name} not prepared: {run.sample.meta.get('symptom', '')}")

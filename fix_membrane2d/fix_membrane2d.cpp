@@ -539,20 +539,41 @@ void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::v
 
 void FixMembrane2d::build_watch_list()
 {
-  watch_entries.clear();
+  // a sorted vector rather than a map: rebuilt at every detection (every step
+  // with every 1) without allocating once it has grown
+  watch_list.clear();
   for (int k = LEFT; k <= RIGHT; k++) {
     SideState &s = sides[k];
     if (!s.active) continue;
-    for (size_t c = 0; c < s.chain_tags.size(); c++) watch_entries[s.chain_tags[c]].chain_index[k] = static_cast<int>(c);
+    for (size_t c = 0; c < s.chain_tags.size(); c++) {
+      WatchEntry e;
+      e.tag = s.chain_tags[c];
+      e.chain_index[k] = static_cast<int>(c);
+      watch_list.push_back(e);
+    }
     if (detect_every == 0 && !s.watch.always)
-      for (int idx : s.watch.disks) watch_entries[s.watch_band[idx].tag].band_index[k] = idx;
+      for (int idx : s.watch.disks) {
+        WatchEntry e;
+        e.tag = s.watch_band[idx].tag;
+        e.band_index[k] = idx;
+        watch_list.push_back(e);
+      }
   }
-  watch_tags.clear();
-  for (const auto &e : watch_entries) watch_tags.push_back(e.first);
-  std::sort(watch_tags.begin(), watch_tags.end());
-  nchain_watched = 0;
-  for (const SideState &s : sides)
-    if (s.active) nchain_watched += s.chain_tags.size();
+  std::sort(watch_list.begin(), watch_list.end(),
+            [](const WatchEntry &a, const WatchEntry &b) { return a.tag < b.tag; });
+  // merge the entries of a disk that is watched in several roles
+  size_t n = 0;
+  for (size_t k = 0; k < watch_list.size(); k++) {
+    if (n > 0 && watch_list[n - 1].tag == watch_list[k].tag) {
+      for (int side = LEFT; side <= RIGHT; side++) {
+        watch_list[n - 1].chain_index[side] = std::max(watch_list[n - 1].chain_index[side], watch_list[k].chain_index[side]);
+        watch_list[n - 1].band_index[side] = std::max(watch_list[n - 1].band_index[side], watch_list[k].band_index[side]);
+      }
+    } else {
+      watch_list[n++] = watch_list[k];
+    }
+  }
+  watch_list.resize(n);
   for (SideState &s : sides) s.chain_disks.resize(s.active ? s.chain_tags.size() : 0);
 }
 
@@ -576,7 +597,8 @@ void FixMembrane2d::gather_watched()
     }
 
   sendbuf.clear();
-  for (long tag : watch_tags) {
+  for (const WatchEntry &e : watch_list) {
+    const long tag = e.tag;
     const int i = atom->map(static_cast<int>(tag));
     if (i < 0 || i >= atom->nlocal) continue;
     const double *v = atom->v[i];
@@ -588,7 +610,7 @@ void FixMembrane2d::gather_watched()
   sendbuf.insert(sendbuf.end(), trailer, trailer + WATCH_FIELDS);
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
-  if (recvbuf.size() != WATCH_FIELDS * (watch_tags.size() + comm->nprocs))
+  if (recvbuf.size() != WATCH_FIELDS * (watch_list.size() + comm->nprocs))
     error->all(FLERR, msg("a chain particle was lost (deleted or out of the box)").c_str());
   for (double v : recvbuf)
     if (!std::isfinite(v))
@@ -605,7 +627,9 @@ void FixMembrane2d::gather_watched()
     }
     const long tag = static_cast<long>(rec[0]);
     const Disk d{tag, rec[1], rec[2], rec[3]};
-    const WatchEntry &e = watch_entries.at(tag);
+    const auto it = std::lower_bound(watch_list.begin(), watch_list.end(), tag,
+                                     [](const WatchEntry &w, long t) { return w.tag < t; });
+    const WatchEntry &e = *it;
     for (int side = LEFT; side <= RIGHT; side++) {
       if (e.chain_index[side] >= 0) {
         sides[side].chain_disks[e.chain_index[side]] = d;

@@ -97,12 +97,11 @@ class FixMembrane2d : public Fix {
 
   // disks whose positions are gathered every step: chain disks and watched disks
   struct WatchEntry {
+    long tag = 0;
     int chain_index[2] = {-1, -1};     // position in sides[k].chain_disks
     int band_index[2] = {-1, -1};      // index in sides[k].now
   };
-  std::unordered_map<long, WatchEntry> watch_entries;
-  std::vector<long> watch_tags;
-  size_t nchain_watched = 0;
+  std::vector<WatchEntry> watch_list;  // sorted by tag
   double band_displacement = 0.0;      // largest band-disk displacement since the detection
   double ylo_detected = 0.0, yhi_detected = 0.0;
 
