@@ -12,7 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 restart=$(readlink -f "${1:-../out/biaxial/prepared.restart}")
-nsteps=${2:-2000}
+nsteps=${2:-3000}
 exe=$(readlink -f ../build/app/liggghts-membrane)
 [ -f "$restart" ] || { echo "no prepared sample $restart: run ./run.sh first"; exit 1; }
 csv=membrane_cost.csv

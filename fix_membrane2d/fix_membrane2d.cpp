@@ -479,9 +479,11 @@ void FixMembrane2d::find_chain(int k)
     result_buf.push_back(static_cast<int>(result.failure.size()));
     result_buf.push_back(result.pruned);
     result_buf.push_back(result.failed_starts);
+    result_buf.push_back(static_cast<int>(result.visited.size()));
     result_buf.insert(result_buf.end(), result.chain.begin(), result.chain.end());
     result_buf.insert(result_buf.end(), result.escaped.begin(), result.escaped.end());
     result_buf.insert(result_buf.end(), result.failure.begin(), result.failure.end());
+    result_buf.insert(result_buf.end(), result.visited.begin(), result.visited.end());
   }
   if (comm->nprocs == 1) return;
   int size = static_cast<int>(result_buf.size());
@@ -494,12 +496,15 @@ void FixMembrane2d::find_chain(int k)
   const int nchain = b[1], nescaped = b[2], nfailure = b[3];
   result.pruned = b[4];
   result.failed_starts = b[5];
-  b += 6;
+  const int nvisited = b[6];
+  b += 7;
   result.chain.assign(b, b + nchain);
   b += nchain;
   result.escaped.assign(b, b + nescaped);
   b += nescaped;
   result.failure.assign(b, b + nfailure);
+  b += nfailure;
+  result.visited.assign(b, b + nvisited);
 }
 
 /* ----------------------------------------------------------------------
@@ -592,9 +597,11 @@ void FixMembrane2d::gather_watched()
       for (const Disk &d : s.watch_band) {
         const int i = atom->map(static_cast<int>(d.tag));
         if (i < 0 || i >= atom->nlocal) continue;
-        local_displacement = std::max(local_displacement, std::hypot(atom->x[i][0] - d.x, atom->x[i][1] - d.y));
+        const double dx = atom->x[i][0] - d.x, dy = atom->x[i][1] - d.y;
+        local_displacement = std::max(local_displacement, dx * dx + dy * dy);
       }
     }
+  local_displacement = std::sqrt(local_displacement);
 
   sendbuf.clear();
   for (const WatchEntry &e : watch_list) {

@@ -229,6 +229,7 @@ void ChainFinder::find(const std::vector<Disk>& disks, Side side, Platens platen
   out.escaped.clear();
   out.pruned = 0;
   out.failed_starts = 0;
+  out.visited.clear();
   chain_.clear();
   walked_.clear();
 
@@ -275,6 +276,8 @@ void ChainFinder::find(const std::vector<Disk>& disks, Side side, Platens platen
     }
     ++out.failed_starts;
   }
+  for (int i = 0; i < n; ++i)
+    if (visited_[i]) out.visited.push_back(i);
   if (!reached) {
     out.failure = "no contact path from the bottom platen to the top platen (" +
                   std::to_string(out.failed_starts) + " start particle(s) tried, first tag " +

@@ -34,6 +34,8 @@ struct ChainResult {
   std::vector<int> escaped;  // ascending indices; includes the pruned dead ends
   int pruned = 0;            // dead-end / hanging-cluster disks cut out of the walk
   int failed_starts = 0;     // start candidates whose walk could not reach the top
+  std::vector<int> visited;  // ascending indices of the disks the walk stood on (their
+                             // neighbours are all it looked at)
 };
 
 // Finds the membrane chain of one side. Keeps its (hashed) cell list and graph buffers
@@ -112,8 +114,10 @@ inline bool touches_bottom(const Disk& d, Platens p, double tol) { return d.y - 
 inline bool touches_top(const Disk& d, Platens p, double tol) { return p.yhi - (d.y + d.r) <= tol; }
 
 // When may a detection be skipped? A ChainFinder result depends only on (i) the
-// links of the band graph, (ii) which disks touch each platen, (iii) the x order
-// of the start candidates ahead of the start disk; the walk's angular choices and
+// links from the disks the walk stood on (r.visited: the walk looks at nothing
+// else, so with these unchanged it takes the same path), (ii) which disks touch
+// each platen, (iii) the x order of the start candidates ahead of the start
+// disk; the walk's angular choices and
 // the escapee test cannot change while these hold (two neighbours of a disk
 // cannot swap their angular order, nor a disk cross a chain segment, without
 // overlapping a chain disk, which is a new link). Relations within `budget`

@@ -34,20 +34,27 @@ void watch_detection(const std::vector<Disk>& band, const ChainResult& r, Platen
     rmax = std::max(rmax, d.r);
   }
 
-  // Pairs: a sweep in y; two disks can be within budget of the link threshold
-  // only if their centres are closer than 2 rmax + tol + budget.
+  // Pairs with a disk the walk stood on, within budget of the link threshold: two
+  // disks that close have centres less than 2 rmax + tol + budget apart in y.
+  std::vector<char> visited(n, 0);
+  for (int i : r.visited) visited[i] = 1;
   std::vector<int> by_y(n);
   std::iota(by_y.begin(), by_y.end(), 0);
   std::sort(by_y.begin(), by_y.end(), [&](int a, int b) { return band[a].y < band[b].y; });
   const double reach = 2.0 * rmax + tol + budget;
-  for (int ka = 0; ka < n; ++ka) {
-    const Disk& a = band[by_y[ka]];
-    for (int kb = ka + 1; kb < n && band[by_y[kb]].y - a.y <= reach; ++kb) {
-      const Disk& b = band[by_y[kb]];
-      if (std::abs(b.x - a.x) > reach) continue;
-      const double gap = std::hypot(b.x - a.x, b.y - a.y) - a.r - b.r;
-      if (std::abs(gap - tol) >= budget) continue;
-      const int i = by_y[ka], j = by_y[kb];
+  for (int i : r.visited) {
+    const Disk& a = band[i];
+    auto k = std::lower_bound(by_y.begin(), by_y.end(), a.y - reach,
+                              [&](int b, double y) { return band[b].y < y; });
+    for (; k != by_y.end() && band[*k].y - a.y <= reach; ++k) {
+      const int j = *k;
+      if (j == i || (visited[j] && j < i)) continue;   // a visited pair once
+      const Disk& b = band[j];
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      // |gap - tol| < budget with gap = dist - ra - rb: compare squares first,
+      // most disks of the window are far from the threshold
+      const double d2 = dx * dx + dy * dy, hi = a.r + b.r + tol + budget, lo = hi - 2.0 * budget;
+      if (d2 >= hi * hi || (lo > 0.0 && d2 <= lo * lo)) continue;
       out.pairs.push_back({i, j, link_from(band[i], band[j], tol), link_from(band[j], band[i], tol)});
     }
   }
