@@ -136,6 +136,8 @@ struct DetectionWatch {
   std::vector<PlatenContact> platen_contacts;
   std::vector<Ahead> ahead;
   std::vector<int> disks;   // every band index the relations refer to, ascending
+  std::vector<char> visited_scratch;   // kept so that a detection allocates nothing
+  std::vector<int> by_y_scratch;
 };
 
 // Records the watch of a successful result `r` of ChainFinder::find on `band`.

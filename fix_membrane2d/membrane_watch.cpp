@@ -36,9 +36,11 @@ void watch_detection(const std::vector<Disk>& band, const ChainResult& r, Platen
 
   // Pairs with a disk the walk stood on, within budget of the link threshold: two
   // disks that close have centres less than 2 rmax + tol + budget apart in y.
-  std::vector<char> visited(n, 0);
+  std::vector<char>& visited = out.visited_scratch;
+  visited.assign(n, 0);
   for (int i : r.visited) visited[i] = 1;
-  std::vector<int> by_y(n);
+  std::vector<int>& by_y = out.by_y_scratch;
+  by_y.resize(n);
   std::iota(by_y.begin(), by_y.end(), 0);
   std::sort(by_y.begin(), by_y.end(), [&](int a, int b) { return band[a].y < band[b].y; });
   const double reach = 2.0 * rmax + tol + budget;

@@ -41,9 +41,11 @@ TEST(MembraneAlloc, RepeatedFindDoesNotAllocate) {
   Polyline poly;
   std::vector<Eigen::Vector2d> f;
   BandSlices band;
+  DetectionWatch watch;
   for (Side side : {Side::Left, Side::Right}) {  // warm-up, both sides
     cf.find(d, side, pl, 0.1, r);
     ASSERT_TRUE(r.ok) << r.failure;
+    watch_detection(d, r, pl, 0.1, 0.05, watch);
     polyline_from_chain(d, r.chain, pl, poly);
     chain_forces(poly, side, 1e5, 1.0, f);
     band.reset(side, pl, 5.0);
@@ -53,6 +55,8 @@ TEST(MembraneAlloc, RepeatedFindDoesNotAllocate) {
     for (Side side : {Side::Left, Side::Right}) {
       for (Disk& k : d) k.x += 1e-4 * u(rng);  // positions move between steps
       cf.find(d, side, pl, 0.1, r);
+      watch_detection(d, r, pl, 0.1, 0.05, watch);   // every auto, at a detection
+      watched_relation_changed(watch, d, side, pl, 0.1);   // every auto, every step
       polyline_from_chain(d, r.chain, pl, poly);
       chain_forces(poly, side, 1e5, 1.0, f);
       band.reset(side, pl, 5.0);
