@@ -79,18 +79,19 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
   return g;
 }
 
-// Warns (once, on rank 0) when the time step exceeds `limit` x sqrt(m_min/k_n)
-// of the group, naming the style through `prefix`, and proposes 0.15 of it
-// (the published set-up). Returns dt / sqrt(m_min/k_n), 0 when the contact
-// model has no linear stiffness table to check against.
+// Warns (on rank 0) when the time step exceeds `limit` x sqrt(m_min/k_n) of
+// the group, naming the style through `prefix`, and proposes 0.15 of it (the
+// published set-up); `warned_dt` holds the step last warned about, so each run
+// of a script with the same dt does not repeat it. Returns dt / sqrt(m_min/k_n),
+// 0 when the contact model has no linear stiffness table to check against.
 inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm world,
-                              const std::string &prefix, double limit)
+                              const std::string &prefix, double limit, double &warned_dt)
 {
   const double kmax = max_normal_stiffness(lmp, prefix.c_str());
   const double mmin = min_group_mass(lmp, groupbit, world);
   const double dt = lmp->update->dt;
   const double ratio = stability::time_step_ratio(dt, mmin, kmax);
-  if (ratio > limit && lmp->comm->me == 0) {
+  if (ratio > limit && dt != warned_dt && lmp->comm->me == 0) {
     char buf[512];
     snprintf(buf, sizeof(buf),
              "time step %g s is %.2f x sqrt(m_min/k_n) = %g s (m_min = %g kg, k_n = %g N/m); "
@@ -99,6 +100,7 @@ inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm wor
              limit, stability::safe_time_step(0.15, mmin, kmax));
     lmp->error->warning(FLERR, (prefix + buf).c_str());
   }
+  if (ratio > limit) warned_dt = dt;
   return ratio;
 }
 

@@ -231,7 +231,7 @@ void FixMembrane2d::init()
   force_detection = true;
   // chain disks are pushed by the membrane on top of their contacts: an
   // unstable chain shows first as escapes
-  check_time_step(lmp, groupbit, world, msg(""), TIME_STEP_LIMIT);
+  check_time_step(lmp, groupbit, world, msg(""), TIME_STEP_LIMIT, warned_dt);
   inertial_step0 = -1;
 }
 

@@ -120,6 +120,7 @@ class FixMembrane2d : public Fix {
   bigint inertial_step0;   // start of the current strain-rate window (-1: none)
   double inertial_height0;
   bool warned_chain_step, warned_inertial;
+  double warned_dt = 0.0;       // the time step last warned about
   bool inertial_above_before;   // the previous window was above the limit
 
   int nmax_flag;

@@ -131,7 +131,7 @@ void FixStabilityGuard::init()
   if (grains.empty) error->all(FLERR, msg("the fix group has no atoms").c_str());
   d50 = grains.d50;
   density = grains.density;
-  values[TIME_STEP_RATIO] = check_time_step(lmp, groupbit, world, PREFIX, time_step_limit);
+  values[TIME_STEP_RATIO] = check_time_step(lmp, groupbit, world, PREFIX, time_step_limit, warned_dt);
 }
 
 /* ----------------------------------------------------------------------

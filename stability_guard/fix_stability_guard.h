@@ -46,6 +46,7 @@ class FixStabilityGuard : public Fix {
   bigint natoms0;           // group atoms at setup
   double values[VECTOR_SIZE];
   bool warned_overlap, warned_inertial;
+  double warned_dt = 0.0;   // the time step last warned about
   int warnings;
 
   void check_atoms();
