@@ -401,6 +401,8 @@ void FixMembrane2d::detect_chains()
       find_chain(k);
       if (result.ok) {
         accept_chain(k);
+        // every 1 would search the narrow band again at the next step: so does every auto
+        if (attempt > 0) sides[k].watch.always = true;
         pending[k] = false;
       } else if (attempt == MAX_WIDENINGS) {
         chain_lost(k);
