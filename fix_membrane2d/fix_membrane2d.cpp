@@ -227,6 +227,7 @@ void FixMembrane2d::init()
   d50 = grains.d50;
   density = grains.density;
   if (band_width <= 0.0) band_width = 4.0 * d50;
+  search_width = band_width;
   if (tolerance < 0.0) tolerance = 0.02 * d50;
   force_detection = true;
   // chain disks are pushed by the membrane on top of their contacts: an
@@ -293,12 +294,12 @@ void FixMembrane2d::pre_force(int)
     gather_watched();
     if (detect_every > 0 || !chains_may_have_changed()) return;
   }
+  force_detection = false;   // detect_chains() sets it again after widening the band
   detect_chains();
   ylo_detected = ylo;
   yhi_detected = yhi;
   build_watch_list();
   gather_watched();   // the new chain's positions and speeds
-  force_detection = false;
 }
 
 /* ----------------------------------------------------------------------
@@ -387,9 +388,12 @@ void FixMembrane2d::detect_chains()
   // A band narrower than the sample's surface roughness can cut every contact
   // path to the top (seen at 8 % axial strain with 4 D50 where 10 D50 found the
   // chain): before declaring the chain lost, widen the band and search again.
+  // The width reached is kept for the rest of the run (a rough outline stays
+  // rough), and both sides are searched again with it at the next step, so
+  // every auto and every 1 search the same bands.
   redetections++;
   bool pending[2] = {sides[LEFT].active, sides[RIGHT].active};
-  double width = band_width;
+  double width = search_width;
   for (int attempt = 0; attempt <= MAX_WIDENINGS && (pending[LEFT] || pending[RIGHT]); attempt++) {
     if (attempt > 0) {
       width *= BAND_WIDENING;
@@ -401,13 +405,15 @@ void FixMembrane2d::detect_chains()
       find_chain(k);
       if (result.ok) {
         accept_chain(k);
-        // every 1 would search the narrow band again at the next step: so does every auto
-        if (attempt > 0) sides[k].watch.always = true;
         pending[k] = false;
       } else if (attempt == MAX_WIDENINGS) {
         chain_lost(k);
       }
     }
+  }
+  if (width > search_width) {
+    search_width = width;
+    force_detection = true;
   }
 }
 

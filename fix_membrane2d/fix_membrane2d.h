@@ -78,6 +78,7 @@ class FixMembrane2d : public Fix {
   ScalarInput pressure_in, ylo_in, yhi_in;   // numbers or v_name
   double thickness;
   double band_width;       // <= 0: 4 x D50 of the group, set in init()
+  double search_width;     // band width of the next search: band_width, or wider once widened
   double tolerance;        // < 0: 0.02 x D50
   double d50;
   double density;          // group mass / group disk area [kg/m^2 per unit thickness]
