@@ -177,22 +177,14 @@ void FixStabilityGuard::check_atoms()
       static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f, atom->radius, atom->mask,
       groupbit, update->dt);
 
-  long counts[1] = {scan.nonfinite};
-  MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPI_LONG, MPI_SUM, world);
-  const double dt_ratio = values[TIME_STEP_RATIO];
-  char hint[256];
-  if (dt_ratio > 0.0)
-    snprintf(hint, sizeof(hint), "reduce the time step (now %.2f x sqrt(m_min/k_n); 0.15 is safe), "
-             "the servo gain or the loading rate", dt_ratio);
-  else
-    snprintf(hint, sizeof(hint), "reduce the time step, the servo gain or the loading rate");
-
-  if (counts[0] > 0) {
+  long nonfinite = scan.nonfinite;
+  MPI_Allreduce(MPI_IN_PLACE, &nonfinite, 1, MPI_LONG, MPI_SUM, world);
+  if (nonfinite > 0) {
     int first = scan.first_nonfinite >= 0 ? atom->tag[scan.first_nonfinite] : INT_MAX;
     MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, world);
-    error->all(FLERR, msg(std::to_string(counts[0]) + " atom(s) have a non-finite position, velocity or "
+    error->all(FLERR, msg(std::to_string(nonfinite) + " atom(s) have a non-finite position, velocity or "
                           "force at step " + std::to_string(update->ntimestep) + " (first: atom " +
-                          std::to_string(first) + "): the run has gone unstable; " + hint).c_str());
+                          std::to_string(first) + "): the run has gone unstable; " + unstable_hint()).c_str());
   }
 
   const ValueTag local{scan.max_step_fraction,
@@ -205,9 +197,20 @@ void FixStabilityGuard::check_atoms()
              "atom %d moved %.3g of its radius in one step at step " BIGINT_FORMAT
              " (limit %g; a quasi-static test moves disks < 0.001): the run has gone unstable "
              "(kinetic energy blow-up); %s", fastest.tag, fastest.value, update->ntimestep,
-             move_limit, hint);
+             move_limit, unstable_hint().c_str());
     error->all(FLERR, msg(buf).c_str());
   }
+}
+
+// what to change, for the errors of an unstable run (worded only when one is raised)
+std::string FixStabilityGuard::unstable_hint() const
+{
+  const double dt_ratio = values[TIME_STEP_RATIO];
+  if (!(dt_ratio > 0.0)) return "reduce the time step, the servo gain or the loading rate";
+  char hint[256];
+  snprintf(hint, sizeof(hint), "reduce the time step (now %.2f x sqrt(m_min/k_n); 0.15 is safe), "
+           "the servo gain or the loading rate", dt_ratio);
+  return hint;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -17,6 +17,8 @@ FixStyle(stability/guard,FixStabilityGuard)
 #ifndef LMP_FIX_STABILITY_GUARD_H
 #define LMP_FIX_STABILITY_GUARD_H
 
+#include <string>
+
 #include "fix.h"
 #include "scalar_input.h"
 
@@ -55,6 +57,7 @@ class FixStabilityGuard : public Fix {
   void check_inertial_number();
   bigint count_group_atoms();
   void warn(const std::string &text);
+  std::string unstable_hint() const;
 };
 
 }
