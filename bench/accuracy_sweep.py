@@ -361,14 +361,21 @@ def cached_meta(metafile, params, done_status, retry_failed):
     return None
 
 
+def known_meta(directory, params, done_status, args, **not_run):
+    """What is known of a run without running it: its cached meta.json, or with
+    --report-only a 'not run' placeholder (with the extra fields not_run), else None
+    (the caller runs it)."""
+    meta = cached_meta(os.path.join(directory, "meta.json"), params, done_status, args.retry_failed)
+    if meta is None and args.report_only:
+        meta = dict(params=params, status="not run", symptom="not run", **not_run)
+    return meta
+
+
 def execute(run, args, restart):
     """Run (or reuse) one shear run; fills run.meta."""
     metafile = os.path.join(run.dir, "meta.json")
-    run.meta = cached_meta(metafile, run.params, "ok", args.retry_failed)
+    run.meta = known_meta(run.dir, run.params, "ok", args)
     if run.meta is not None:
-        return run
-    if args.report_only:
-        run.meta = dict(params=run.params, status="not run", symptom="not run")
         return run
     os.makedirs(run.dir, exist_ok=True)
     for f in os.listdir(run.dir):

@@ -209,11 +209,8 @@ def sample_geometry(data, ftot):
 def prepare(s, args):
     """Prepare sample s (or reuse it); fills s.meta. Never raises for a failed run."""
     metafile = os.path.join(s.dir, "meta.json")
-    s.meta = acc.cached_meta(metafile, s.params, "ok", args.retry_failed)
+    s.meta = acc.known_meta(s.dir, s.params, "ok", args)
     if s.meta is not None:
-        return s
-    if args.report_only:
-        s.meta = dict(params=s.params, status="not run", symptom="not run")
         return s
     os.makedirs(s.dir, exist_ok=True)
     if not os.path.exists(s.data):
