@@ -440,11 +440,7 @@ void FixMembrane2d::accept_chain(int k)
   const std::vector<long> old_tags = s.chain_tags;
   const std::vector<long> old_escaped = s.escaped_tags;
   s.chain_tags.clear();
-  s.chain_position.clear();
-  for (int idx : result.chain) {
-    s.chain_position[s.band[idx].tag] = s.chain_tags.size();
-    s.chain_tags.push_back(s.band[idx].tag);
-  }
+  for (int idx : result.chain) s.chain_tags.push_back(s.band[idx].tag);
   s.escaped_tags.clear();
   s.escaped_radius.clear();
   for (int idx : result.escaped) {

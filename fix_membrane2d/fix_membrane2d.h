@@ -18,7 +18,6 @@ FixStyle(membrane2d,FixMembrane2d)
 
 #include <cstdio>
 #include <map>
-#include <unordered_map>
 #include <vector>
 
 #include "fix.h"
@@ -59,7 +58,6 @@ class FixMembrane2d : public Fix {
     membrane::Side side;
     bool active = false;
     std::vector<long> chain_tags;        // bottom -> top, kept between detections
-    std::unordered_map<long, size_t> chain_position;  // tag -> index in chain_tags
     std::vector<long> escaped_tags;
     std::vector<double> escaped_radius;
     membrane::BandSlices slices;
