@@ -12,9 +12,12 @@
 #include "update.h"
 #include "variable.h"
 
+#include "style_args.h"
+
 // A style argument given as a number or as an equal-style variable v_name
 // (pressures, platen positions, strain rates). Errors name the style through
-// `prefix` ("Fix membrane2d: ") and the argument through `name`.
+// `prefix` ("Fix membrane2d: ") and the keyword through `name`, in the form
+// of style_args.h.
 class ScalarInput {
  public:
   void parse(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name, const char *arg)
@@ -27,7 +30,8 @@ class ScalarInput {
     char *end = nullptr;
     value_ = strtod(arg, &end);
     if (text.empty() || *end != '\0' || !std::isfinite(value_))
-      lmp->error->all(FLERR, (prefix + name + " must be a finite number or v_name, got '" + text + "'").c_str());
+      lmp->error->all(FLERR, keyword_message(prefix, name, "'" + text + "'",
+                                             "must be a finite number or v_name (an equal-style variable)").c_str());
   }
 
   // finds the variable (input scripts may define it after the style)
@@ -36,9 +40,13 @@ class ScalarInput {
     if (varname_.empty()) return;
     ivar_ = lmp->input->variable->find(const_cast<char *>(varname_.c_str()));
     if (ivar_ < 0)
-      lmp->error->all(FLERR, (prefix + "variable '" + varname_ + "' for " + name + " does not exist").c_str());
+      lmp->error->all(FLERR, keyword_message(prefix, name, "v_" + varname_,
+                                             "variable '" + varname_ + "' does not exist; define it "
+                                             "(variable " + varname_ + " equal ...) before the run").c_str());
     if (!lmp->input->variable->equalstyle(ivar_))
-      lmp->error->all(FLERR, (prefix + "variable '" + varname_ + "' for " + name + " must be equal-style").c_str());
+      lmp->error->all(FLERR, keyword_message(prefix, name, "v_" + varname_,
+                                             "variable '" + varname_ + "' is not equal-style; use an "
+                                             "equal-style variable (one number)").c_str());
   }
 
   // computes referenced by the variable are invoked on demand, as fix ave/time does
@@ -51,7 +59,23 @@ class ScalarInput {
     return v;
   }
 
+  // the value, which must be finite (and >= 0 with `non_negative`): a variable
+  // that turns NaN, inf or negative mid-run stops the run with the step
+  double evaluate_checked(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name,
+                          bool non_negative) const
+  {
+    const double v = evaluate(lmp);
+    if (!std::isfinite(v) || (non_negative && !(v >= 0.0)))
+      lmp->error->all(FLERR, keyword_message(prefix, name, text(),
+                                             std::string("is ") + number_text(v) + " at step " +
+                                             std::to_string(lmp->update->ntimestep) + "; it must be " +
+                                             (non_negative ? "a finite number >= 0" : "finite")).c_str());
+    return v;
+  }
+
   bool is_variable() const { return !varname_.empty(); }
+  // as the user wrote it: the number or v_name
+  std::string text() const { return is_variable() ? "v_" + varname_ : number_text(value_); }
 
  private:
   double value_ = 0.0;

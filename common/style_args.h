@@ -1,0 +1,132 @@
+#ifndef LIGGGHTS_MEMBRANE_STYLE_ARGS_H
+#define LIGGGHTS_MEMBRANE_STYLE_ARGS_H
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "error.h"
+#include "lammps.h"
+
+// The keyword/value arguments of a style, walked in order, with one form for
+// every message of our four styles (doc/messages.md):
+//
+//   <Style> <name>: keyword '<key>' = <value>: <what is wrong>; <usage or what to do>
+//   <Style> <name>: keyword '<key>' needs a value: <usage>
+//   <Style> <name>: keyword '<key>' is required: <usage>
+//   <Style> <name>: unknown keyword '<key>'; keywords: <list>
+//
+// `prefix` is "Fix membrane2d: ", "Compute fabric: ", ...; `usage` says what
+// the value is ("band W: a length in distance units, default 4 x D50").
+
+// %g of a number, for messages
+inline std::string number_text(double v)
+{
+  char buf[64];
+  snprintf(buf, sizeof(buf), "%g", v);
+  return buf;
+}
+
+inline std::string keyword_message(const std::string &prefix, const std::string &key,
+                                   const std::string &value, const std::string &problem)
+{
+  return prefix + "keyword '" + key + "' = " + value + ": " + problem;
+}
+
+class StyleArgs {
+ public:
+  StyleArgs(LAMMPS_NS::LAMMPS *lmp, std::string prefix, int narg, char **arg, int first)
+    : lmp_(lmp), prefix_(std::move(prefix)), narg_(narg), arg_(arg), next_(first) {}
+
+  bool more() const { return next_ < narg_; }
+
+  // the next keyword; its value(s) follow
+  const std::string &keyword()
+  {
+    key_ = arg_[next_++];
+    return key_;
+  }
+
+  // the next word as this keyword's value
+  const char *value(const std::string &usage)
+  {
+    if (next_ >= narg_) fail_all(prefix_ + "keyword '" + key_ + "' needs a value: " + usage);
+    value_ = arg_[next_++];
+    return value_;
+  }
+
+  double positive(const std::string &usage)
+  {
+    const double v = number(usage);
+    if (!(v > 0.0)) bad("must be a positive number", usage);
+    return v;
+  }
+
+  double non_negative(const std::string &usage)
+  {
+    const double v = number(usage);
+    if (!(v >= 0.0)) bad("must be a number >= 0", usage);
+    return v;
+  }
+
+  // a finite number
+  double number(const std::string &usage)
+  {
+    const char *text = value(usage);
+    char *end = nullptr;
+    const double v = strtod(text, &end);
+    if (*text == '\0' || *end != '\0') bad("is not a number", usage);
+    if (!std::isfinite(v)) bad("must be finite", usage);
+    return v;
+  }
+
+  long integer(long lo, long hi, const std::string &usage)
+  {
+    const char *text = value(usage);
+    char *end = nullptr;
+    errno = 0;
+    const long v = strtol(text, &end, 10);
+    if (*text == '\0' || *end != '\0' || errno == ERANGE) bad("is not an integer", usage);
+    if (v < lo || v > hi)
+      bad("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi), usage);
+    return v;
+  }
+
+  // the current value is wrong: "<prefix>keyword 'k' = v: problem; usage"
+  [[noreturn]] void bad(const std::string &problem, const std::string &usage) const
+  {
+    fail_all(keyword_message(prefix_, key_, value_, problem + "; " + usage));
+  }
+
+  [[noreturn]] void unknown(const std::string &keywords) const
+  {
+    fail_all(prefix_ + "unknown keyword '" + key_ + "'; keywords: " + keywords);
+  }
+
+  [[noreturn]] void required(const std::string &key, const std::string &usage) const
+  {
+    fail_all(prefix_ + "keyword '" + key + "' is required: " + usage);
+  }
+
+  const std::string &current_key() const { return key_; }
+  const char *current_value() const { return value_; }
+
+ private:
+  [[noreturn]] void fail_all(const std::string &text) const
+  {
+    lmp_->error->all(FLERR, text.c_str());
+    std::abort();   // Error::all does not return; tells the compiler so
+  }
+
+  LAMMPS_NS::LAMMPS *lmp_;
+  std::string prefix_;
+  int narg_;
+  char **arg_;
+  int next_;
+  std::string key_;
+  const char *value_ = "";
+};
+
+#endif
