@@ -82,9 +82,11 @@ class StyleArgs {
     return v;
   }
 
-  long integer(long lo, long hi, const std::string &usage)
+  long integer(long lo, long hi, const std::string &usage) { return to_integer(value(usage), lo, hi, usage); }
+
+  // the current value `text` (already taken with value()) as an integer
+  long to_integer(const char *text, long lo, long hi, const std::string &usage)
   {
-    const char *text = value(usage);
     char *end = nullptr;
     errno = 0;
     const long v = strtol(text, &end, 10);

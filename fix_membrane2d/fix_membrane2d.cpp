@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cerrno>
 #include <cstring>
 #include <string>
 #include <unordered_map>
@@ -28,6 +29,8 @@
 
 #include "allgather.h"
 #include "contact_scales.h"
+#include "membrane_record.h"
+#include "style_args.h"
 #include "stability_checks.h"
 
 using namespace LAMMPS_NS;
@@ -51,12 +54,18 @@ constexpr bigint INERTIAL_WINDOW = 1000;    // steps over which the platen strai
 const char *side_name(int s) { return s == LEFT ? "left" : "right"; }
 
 enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
-constexpr size_t WATCH_FIELDS = 5;   // tag, x, y, r, |v| dt / r
+constexpr size_t WATCH_FIELDS = 6;   // tag, x, y, r, |v| dt / r, type
 // every auto: relations within this many D50 of their threshold are watched
 // every step; the others may flip only after a band disk moved half as far
 constexpr double WATCH_BUDGET = 0.01;
 
 std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
+
+const char *const KEYWORDS[] = {"pressure", "ylo", "yhi", "sides", "band", "tolerance",
+                                "thickness", "every", "frictionless", "polyline"};
+
+// a gap tolerance beyond this many D50 bridges real gaps between disks
+constexpr double TOLERANCE_LIMIT = 0.25;
 
 }  // namespace
 
@@ -64,7 +73,7 @@ std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
-  thickness(1.0), band_width(-1.0), tolerance(-1.0), d50(0.0), density(0.0), detect_every(0),
+  thickness(1.0), band_width(-1.0), search_width(0.0), tolerance(-1.0), band_given(-1.0), tolerance_given(-1.0), d50(0.0), density(0.0), detect_every(0),
   membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
   pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true),
   redetections(0), failures(0), widenings(0), changes(0), chain_step{0.0, -1}, inertial(0.0), inertial_step0(-1),
@@ -77,86 +86,68 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   if (atom->tag_enable == 0 || atom->map_style == 0)
     error->all(FLERR, msg("requires atom IDs and an atom map (atom_modify map array)").c_str());
 
+  if (domain->xperiodic)
+    error->all(FLERR, msg("the box is periodic in x: the sample would wrap across the boundary and "
+                          "its outermost disks have no left and right; use boundary f f p (or m m p)").c_str());
+
   sides[LEFT].side = Side::Left;
   sides[RIGHT].side = Side::Right;
   sides[LEFT].active = sides[RIGHT].active = true;
 
+  const char *usage_pressure = "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
+  const char *usage_ylo = "ylo Y: the bottom platen surface (length), a number or v_name";
+  const char *usage_yhi = "yhi Y: the top platen surface (length), a number or v_name";
   bool have_pressure = false, have_ylo = false, have_yhi = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (iarg + 1 >= narg)
-      error->all(FLERR, msg("keyword '" + key + "' needs a value").c_str());
-    const char *value = arg[iarg + 1];
-    auto positive_number = [&](const char *what) {
-      char *end = nullptr;
-      const double v = strtod(value, &end);
-      if (*end != '\0' || !(v > 0.0) || !std::isfinite(v))
-        error->all(FLERR, msg(std::string(what) + " must be a positive number, got '" + value + "'").c_str());
-      return v;
-    };
+  StyleArgs args(lmp, msg(""), narg, arg, 3);
+  while (args.more()) {
+    const std::string key = args.keyword();
     if (key == "pressure") {
+      const char *value = args.value(usage_pressure);
       pressure_in.parse(lmp, msg(""), "pressure", value);
       if (!pressure_in.is_variable() && !(pressure_in.evaluate(lmp) >= 0.0))
-        error->all(FLERR, msg(std::string("pressure must be >= 0, got '") + value + "'").c_str());
+        args.bad("must be >= 0", usage_pressure);
       have_pressure = true;
     } else if (key == "ylo") {
-      ylo_in.parse(lmp, msg(""), "ylo", value);
+      ylo_in.parse(lmp, msg(""), "ylo", args.value(usage_ylo));
       have_ylo = true;
     } else if (key == "yhi") {
-      yhi_in.parse(lmp, msg(""), "yhi", value);
+      yhi_in.parse(lmp, msg(""), "yhi", args.value(usage_yhi));
       have_yhi = true;
     } else if (key == "sides") {
-      const std::string v = value;
-      if (v != "left" && v != "right" && v != "both")
-        error->all(FLERR, msg("sides must be left, right or both").c_str());
+      const std::string v = args.value("sides left|right|both");
+      if (v != "left" && v != "right" && v != "both") args.bad("must be left, right or both", "sides left|right|both");
       sides[LEFT].active = v != "right";
       sides[RIGHT].active = v != "left";
     } else if (key == "band") {
-      band_width = positive_number("band");
+      band_width = args.positive("band W: the width of the side bands (length), default 4 x D50");
+      band_given = band_width;
     } else if (key == "tolerance") {
-      char *end = nullptr;
-      tolerance = strtod(value, &end);
-      if (*end != '\0' || !(tolerance >= 0.0) || !std::isfinite(tolerance))
-        error->all(FLERR, msg(std::string("tolerance must be a number >= 0, got '") + value + "'").c_str());
+      tolerance = args.non_negative("tolerance G: the largest gap (length) counted as a contact, default 0.02 x D50");
+      tolerance_given = tolerance;
     } else if (key == "thickness") {
-      thickness = positive_number("thickness");
+      thickness = args.positive("thickness T: the out-of-plane thickness (length), default 1");
     } else if (key == "every") {
-      char *end = nullptr;
-      const long n = strtol(value, &end, 10);
-      if (strcmp(value, "auto") == 0) {
-        detect_every = 0;
-      } else if (*end != '\0' || n < 1 || n > 1000000000L) {
-        error->all(FLERR, msg(std::string("every must be auto or an integer >= 1, got '") + value + "'").c_str());
-      } else {
-        detect_every = static_cast<int>(n);
-      }
+      const char *usage = "every auto|N: detect when the chain can have changed (auto) or every N >= 1 steps";
+      const char *value = args.value(usage);
+      detect_every = strcmp(value, "auto") == 0 ? 0 : static_cast<int>(args.to_integer(value, 1, 1000000000L, usage));
     } else if (key == "frictionless") {
-      char *end = nullptr;
-      const long t = strtol(value, &end, 10);
-      if (*end != '\0' || t < 1 || t > atom->ntypes)
-        error->all(FLERR, msg(std::string("frictionless needs an atom type from 1 to ntypes, got '") +
-                              value + "'").c_str());
-      membrane_type = static_cast<int>(t);
+      membrane_type = static_cast<int>(args.integer(1, atom->ntypes,
+          "frictionless T: the atom type chain disks take (its coefficientFriction with every type is 0)"));
     } else if (key == "polyline") {
-      if (iarg + 2 >= narg)
-        error->all(FLERR, msg("polyline needs N and a file name").c_str());
-      char *end = nullptr;
-      const long n = strtol(value, &end, 10);
-      if (*end != '\0' || n < 1)
-        error->all(FLERR, msg(std::string("polyline N must be an integer >= 1, got '") + value + "'").c_str());
-      polyline_every = n;
-      polyline_file = new char[strlen(arg[iarg + 2]) + 1];
-      strcpy(polyline_file, arg[iarg + 2]);
-      iarg++;
+      const char *usage = "polyline N FILE: write the chains every N >= 1 steps to FILE";
+      polyline_every = args.integer(1, 1000000000L, usage);
+      const std::string file = args.value(usage);
+      for (const char *k : KEYWORDS)
+        if (file == k) args.bad("the file name is the keyword '" + file + "'", usage);
+      polyline_file = new char[file.size() + 1];
+      strcpy(polyline_file, file.c_str());
     } else {
-      error->all(FLERR, msg("unknown keyword '" + key + "'").c_str());
+      args.unknown("pressure, ylo, yhi, sides, band, tolerance, thickness, every, frictionless, polyline");
     }
-    iarg += 2;
   }
-  if (!have_pressure) error->all(FLERR, msg("missing keyword 'pressure'").c_str());
-  if (!have_ylo) error->all(FLERR, msg("missing keyword 'ylo' (bottom platen)").c_str());
-  if (!have_yhi) error->all(FLERR, msg("missing keyword 'yhi' (top platen)").c_str());
+  if (!have_pressure) args.required("pressure", usage_pressure);
+  if (!have_ylo) args.required("ylo", usage_ylo);
+  if (!have_yhi) args.required("yhi", usage_yhi);
 
   vector_flag = 1;
   size_vector = VECTOR_SIZE;
@@ -166,13 +157,23 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   size_peratom_cols = 0;
   peratom_freq = 1;
   restart_global = 1;
+  restart_peratom = 1;   // only to give chain disks their frictionless type back after packing
+  atom->add_callback(1);
   vector_atom = nullptr;
   std::fill(vector_values, vector_values + VECTOR_SIZE, 0.0);
 
-  if (polyline_file && comm->me == 0) {
-    polyline_fp = fopen(polyline_file, "w");
-    if (!polyline_fp)
-      error->one(FLERR, msg(std::string("cannot open polyline file ") + polyline_file).c_str());
+  if (polyline_file) {
+    // rank 0 writes; every rank stops with its reason, so no rank waits for it
+    char reason[256] = "";
+    if (comm->me == 0) {
+      polyline_fp = fopen(polyline_file, "w");
+      if (!polyline_fp) snprintf(reason, sizeof(reason), "%s", strerror(errno));
+    }
+    MPI_Bcast(reason, sizeof(reason), MPI_CHAR, 0, world);
+    if (reason[0])
+      error->all(FLERR, keyword_message(msg(""), "polyline", polyline_file,
+                                        std::string("cannot open the file for writing (") + reason +
+                                        "); check that its folder exists and is writable").c_str());
   }
 }
 
@@ -181,8 +182,8 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
 FixMembrane2d::~FixMembrane2d()
 {
   // after 'unfix' the chain disks are ordinary disks again, with their friction
-  if (membrane_type > 0 && atom && atom->type)
-    for (SideState &s : sides) switch_types(s.chain_tags, {});
+  if (atom && atom->type) restore_types();
+  if (atom) atom->delete_callback(id, 1);
   delete[] polyline_file;
   if (polyline_fp) fclose(polyline_fp);
   memory->destroy(vector_atom);
@@ -221,30 +222,72 @@ void FixMembrane2d::init()
     error->warning(FLERR, msg("no 'frictionless' type given: chain disks keep their friction").c_str());
   }
 
+  check_other_membranes();
+
   // D50 sets the default band width and gap tolerance; with the density, the inertial number
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
   if (grains.empty) error->all(FLERR, msg("the fix group has no atoms").c_str());
   d50 = grains.d50;
   density = grains.density;
   if (band_width <= 0.0) band_width = 4.0 * d50;
-  search_width = band_width;
+  if (search_width <= 0.0) search_width = band_width;   // a widened band is kept (detect_chains)
   if (tolerance < 0.0) tolerance = 0.02 * d50;
-  force_detection = true;
+  check_tolerance();
   // chain disks are pushed by the membrane on top of their contacts: an
   // unstable chain shows first as escapes
   check_time_step(lmp, groupbit, world, msg(""), TIME_STEP_LIMIT, warned_dt);
-  inertial_step0 = -1;
+}
+
+/* ----------------------------------------------------------------------
+   two membranes on one disk would apply the pressure twice and fight over
+   its type: groups of several fix membrane2d must not share a disk
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::check_other_membranes()
+{
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (other == this || strcmp(other->style, style) != 0) continue;
+    bigint shared = 0, total = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) shared++;
+    MPI_Allreduce(&shared, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    const bool first = f < modify->find_fix(id);
+    if (total > 0)
+      error->all(FLERR, msg(std::string("fixes '") + (first ? other->id : id) + "' and '" + (first ? id : other->id) +
+                            "' are both membrane2d on " +
+                            std::to_string(total) + " disks: one membrane per sample (unfix one; "
+                            "two samples need groups with no disk in common)").c_str());
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the tolerance is a length: a value meant as a fraction of D50 (0.02)
+   bridges gaps of several disks and shortens the chain
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::check_tolerance()
+{
+  if (!(tolerance > TOLERANCE_LIMIT * d50)) return;
+  char buf[512];
+  snprintf(buf, sizeof(buf),
+           "is %.3g x D50 (D50 = %g); it is the largest gap counted as a contact, a length in "
+           "distance units, at most %g x D50; typically 0.02 x D50 = %g (the default)",
+           tolerance / d50, d50, TOLERANCE_LIMIT, 0.02 * d50);
+  error->all(FLERR, keyword_message(msg(""), "tolerance", number_text(tolerance), buf).c_str());
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixMembrane2d::evaluate_platens()
 {
-  ylo = ylo_in.evaluate(lmp);
-  yhi = yhi_in.evaluate(lmp);
-  if (!std::isfinite(ylo) || !std::isfinite(yhi) || !(ylo < yhi))
-    error->all(FLERR, msg("the bottom platen (ylo = " + std::to_string(ylo) +
-                          ") must be below the top platen (yhi = " + std::to_string(yhi) + ")").c_str());
+  ylo = ylo_in.evaluate_checked(lmp, msg(""), "ylo", false);
+  yhi = yhi_in.evaluate_checked(lmp, msg(""), "yhi", false);
+  if (!(ylo < yhi))
+    error->all(FLERR, keyword_message(msg(""), "ylo", ylo_in.text(),
+                                      "is " + number_text(ylo) + ", not below yhi = " + number_text(yhi) +
+                                      " at step " + std::to_string(update->ntimestep) +
+                                      "; ylo is the bottom platen surface, yhi the top one").c_str());
 }
 
 void FixMembrane2d::check_platens()
@@ -259,11 +302,13 @@ void FixMembrane2d::check_platens()
   MPI_Allreduce(&lo, &glo, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(&hi, &ghi, 1, MPI_DOUBLE, MPI_MAX, world);
   if (glo < ylo)
-    error->all(FLERR, msg("a particle centre (y = " + std::to_string(glo) +
-                          ") is below the bottom platen ylo = " + std::to_string(ylo)).c_str());
+    error->all(FLERR, keyword_message(msg(""), "ylo", ylo_in.text(),
+                                      "is " + number_text(ylo) + ", above the lowest disk centre of the group (y = " +
+                                      number_text(glo) + "); the platens must enclose the sample").c_str());
   if (ghi > yhi)
-    error->all(FLERR, msg("a particle centre (y = " + std::to_string(ghi) +
-                          ") is above the top platen yhi = " + std::to_string(yhi)).c_str());
+    error->all(FLERR, keyword_message(msg(""), "yhi", yhi_in.text(),
+                                      "is " + number_text(yhi) + ", below the highest disk centre of the group (y = " +
+                                      number_text(ghi) + "); the platens must enclose the sample").c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -272,8 +317,64 @@ void FixMembrane2d::setup_pre_force(int vflag)
 {
   evaluate_platens();
   check_platens();
-  force_detection = true;
+  // the chains of the last run (or the restart file) still hold when no disk
+  // of the group was created, deleted, renumbered, retyped or moved since
+  // (this step's detection, if any, was then done in the last step of that run)
+  const bool kept = state_kept && group_checksum() == state_checksum;
+  state_kept = false;
+  if (kept) {
+    gather_watched();
+    apply_types();
+    return;
+  }
+  forget_state();
   pre_force(vflag);
+}
+
+void FixMembrane2d::forget_state()
+{
+  restore_types();
+  for (SideState &s : sides) {
+    // kept only to count whether the next detection changes the chain
+    s.forgotten_tags.swap(s.chain_tags);
+    s.forgotten_escaped.swap(s.escaped_tags);
+    s.chain_tags.clear();
+    s.escaped_tags.clear();
+    s.escaped_radius.clear();
+    s.chain_disks.clear();
+    s.watch.always = true;
+  }
+  observed_type.clear();
+  watch_list.clear();
+  force_detection = true;
+}
+
+/* ----------------------------------------------------------------------
+   the sum over the group of a hash of each disk (order-free, so any rank
+   count gives the same), taken while every disk has its own type
+------------------------------------------------------------------------- */
+
+std::uint64_t FixMembrane2d::group_checksum()
+{
+  std::uint64_t sum = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit)
+      sum += membrane::disk_checksum(atom->tag[i], atom->type[i], atom->x[i][0], atom->x[i][1], atom->radius[i]);
+  std::uint64_t total = 0;
+  MPI_Allreduce(&sum, &total, 1, MPI_UINT64_T, MPI_SUM, world);
+  return total;
+}
+
+/* ----------------------------------------------------------------------
+   end of a run: every disk gets its own type back (the next run, a
+   write_data, an unfix or a run without this fix see the true sample)
+------------------------------------------------------------------------- */
+
+void FixMembrane2d::post_run()
+{
+  restore_types();
+  state_checksum = group_checksum();
+  state_kept = true;
 }
 
 void FixMembrane2d::setup(int vflag)
@@ -292,7 +393,10 @@ void FixMembrane2d::pre_force(int)
   const bool scheduled = force_detection || (detect_every > 0 && update->ntimestep % detect_every == 0);
   if (!scheduled) {
     gather_watched();
-    if (detect_every > 0 || !chains_may_have_changed()) return;
+    if (detect_every > 0 || !chains_may_have_changed()) {
+      if (!types_applied) apply_types();
+      return;
+    }
   }
   force_detection = false;   // detect_chains() sets it again after widening the band
   detect_chains();
@@ -300,6 +404,7 @@ void FixMembrane2d::pre_force(int)
   yhi_detected = yhi;
   build_watch_list();
   gather_watched();   // the new chain's positions and speeds
+  if (!types_applied) apply_types();
 }
 
 /* ----------------------------------------------------------------------
@@ -437,8 +542,11 @@ void FixMembrane2d::chain_lost(int k)
 void FixMembrane2d::accept_chain(int k)
 {
   SideState &s = sides[k];
-  const std::vector<long> old_tags = s.chain_tags;
-  const std::vector<long> old_escaped = s.escaped_tags;
+  const bool forgotten = s.chain_tags.empty();
+  const std::vector<long> old_tags = forgotten ? s.forgotten_tags : s.chain_tags;
+  const std::vector<long> old_escaped = forgotten ? s.forgotten_escaped : s.escaped_tags;
+  s.forgotten_tags.clear();
+  s.forgotten_escaped.clear();
   s.chain_tags.clear();
   for (int idx : result.chain) s.chain_tags.push_back(s.band[idx].tag);
   s.escaped_tags.clear();
@@ -513,12 +621,30 @@ void FixMembrane2d::find_chain(int k)
 
 /* ----------------------------------------------------------------------
    Disks that leave the chain get their own type (and friction) back, disks
-   that join take the frictionless type. Ghost copies are switched too: a
+   of the chain take the frictionless type. Ghost copies are switched too: a
    ghost's type is otherwise refreshed only when the neighbour list is rebuilt.
 ------------------------------------------------------------------------- */
 
+void FixMembrane2d::apply_types()
+{
+  types_applied = true;
+  if (membrane_type <= 0) return;
+  for (SideState &s : sides)
+    for (size_t c = 0; c < s.chain_disks.size(); c++)
+      if (s.chain_types[c] != membrane_type) observed_type.emplace(s.chain_disks[c].tag, s.chain_types[c]);
+  for (SideState &s : sides) switch_types({}, s.chain_tags);
+}
+
+void FixMembrane2d::restore_types()
+{
+  if (types_applied && membrane_type > 0)
+    for (SideState &s : sides) switch_types(s.chain_tags, {});
+  types_applied = false;
+}
+
 void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags)
 {
+  if (membrane_type <= 0) return;
   std::unordered_map<long, int> change;
   std::vector<long> a = old_tags, b = new_tags;
   std::sort(a.begin(), a.end());
@@ -529,8 +655,7 @@ void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::v
       auto it = observed_type.find(tag);
       if (it != observed_type.end()) change[tag] = it->second;
     }
-  for (long tag : b)
-    if (!std::binary_search(a.begin(), a.end(), tag)) change[tag] = membrane_type;
+  for (long tag : b) change[tag] = membrane_type;
   if (change.empty()) return;
 
   // the owned copy and every ghost image of each changed disk
@@ -583,7 +708,10 @@ void FixMembrane2d::build_watch_list()
     }
   }
   watch_list.resize(n);
-  for (SideState &s : sides) s.chain_disks.resize(s.active ? s.chain_tags.size() : 0);
+  for (SideState &s : sides) {
+    s.chain_disks.resize(s.active ? s.chain_tags.size() : 0);
+    s.chain_types.resize(s.chain_disks.size());
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -614,15 +742,19 @@ void FixMembrane2d::gather_watched()
     if (i < 0 || i >= atom->nlocal) continue;
     const double *v = atom->v[i];
     const double rec[WATCH_FIELDS] = {static_cast<double>(tag), atom->x[i][0], atom->x[i][1], atom->radius[i],
-                                      stability::step_fraction(v[0], v[1], update->dt, atom->radius[i])};
+                                      stability::step_fraction(v[0], v[1], update->dt, atom->radius[i]),
+                                      static_cast<double>(atom->type[i])};
     sendbuf.insert(sendbuf.end(), rec, rec + WATCH_FIELDS);
   }
-  const double trailer[WATCH_FIELDS] = {-1.0, local_displacement, 0.0, 0.0, 0.0};
+  const double trailer[WATCH_FIELDS] = {-1.0, local_displacement, 0.0, 0.0, 0.0, 0.0};
   sendbuf.insert(sendbuf.end(), trailer, trailer + WATCH_FIELDS);
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
   if (recvbuf.size() != WATCH_FIELDS * (watch_list.size() + comm->nprocs))
-    error->all(FLERR, msg("a chain particle was lost (deleted or out of the box)").c_str());
+    error->all(FLERR, msg("a chain or band disk was lost at step " + std::to_string(update->ntimestep) +
+                          " (it left the box; 'thermo_modify lost ignore' hides this): the membrane cannot "
+                          "hold a sample whose outer disks fly off; check the time step, the pressure and "
+                          "the platens").c_str());
   for (double v : recvbuf)
     if (!std::isfinite(v))
       error->all(FLERR, msg("a chain particle position is not finite at step " +
@@ -644,6 +776,7 @@ void FixMembrane2d::gather_watched()
     for (int side = LEFT; side <= RIGHT; side++) {
       if (e.chain_index[side] >= 0) {
         sides[side].chain_disks[e.chain_index[side]] = d;
+        sides[side].chain_types[e.chain_index[side]] = static_cast<int>(rec[5]);
         if (rec[4] > chain_step.fraction) chain_step = {rec[4], tag};
       }
       if (e.band_index[side] >= 0) sides[side].now[e.band_index[side]] = d;
@@ -655,10 +788,7 @@ void FixMembrane2d::gather_watched()
 
 void FixMembrane2d::post_force(int)
 {
-  pressure = pressure_in.evaluate(lmp);
-  if (!(pressure >= 0.0) || !std::isfinite(pressure))
-    error->all(FLERR, msg("pressure must be a finite number >= 0, got " + std::to_string(pressure) +
-                          " at step " + std::to_string(update->ntimestep)).c_str());
+  pressure = pressure_in.evaluate_checked(lmp, msg(""), "pressure", true);
   // positions of the chain disks: gathered in pre_force (they do not move in between)
   for (SideState &s : sides) {
     if (!s.active) continue;
@@ -797,8 +927,8 @@ void FixMembrane2d::update_outputs()
     v[MEAN_WIDTH] = v[AREA] / (yhi - ylo);
     v[MID_WIDTH] = membrane::width_at(0.5 * (ylo + yhi), l.polyline, r.polyline);
   }
-  v[CHAIN_LEFT] = static_cast<double>(l.chain_tags.size());
-  v[CHAIN_RIGHT] = static_cast<double>(r.chain_tags.size());
+  v[CHAIN_LEFT] = l.active ? static_cast<double>(l.chain_tags.size()) : 0.0;
+  v[CHAIN_RIGHT] = r.active ? static_cast<double>(r.chain_tags.size()) : 0.0;
   v[ESCAPED] = static_cast<double>(l.escaped_tags.size() + r.escaped_tags.size());
   v[FX_LEFT] = l.total.x();
   v[FY_LEFT] = l.total.y();
@@ -839,62 +969,134 @@ void FixMembrane2d::write_polylines()
 }
 
 /* ----------------------------------------------------------------------
-   restart: the chains, the escapees and the types the chain disks had
-   before they joined (atoms in the restart file carry the frictionless type)
+   restart: everything a run continued from the file needs to give the
+   output of one straight through (the chains, escapees, what the last
+   detection depended on, the band width reached, counters, the inertial
+   window), with the definition it was written with. The disks in the file
+   carry their own types: write_restart() gives them back before LIGGGHTS
+   packs the atoms and pack_restart() switches each packed one again, so a
+   restart read by another definition, another fix ID or no membrane at all
+   holds the true sample.
 ------------------------------------------------------------------------- */
 
 void FixMembrane2d::write_restart(FILE *fp)
 {
-  std::vector<double> buf;
+  const int nlocal = atom->nlocal;
+  restored_for_restart.assign(nlocal, 0);
+  if (types_applied && membrane_type > 0)
+    for (const SideState &s : sides)
+      for (long tag : s.chain_tags) {
+        const int i = atom->map(static_cast<int>(tag));
+        if (i < 0 || i >= nlocal) continue;
+        const auto it = observed_type.find(tag);
+        if (it == observed_type.end() || atom->type[i] != membrane_type) continue;
+        atom->type[i] = it->second;
+        restored_for_restart[i] = 1;
+      }
+  types_applied = false;   // pre_force switches the disks a region write skipped
+  const std::uint64_t checksum = group_checksum();
+
+  membrane::RecordWriter out;
+  // the definition
+  out.put((sides[LEFT].active ? 1 : 0) + (sides[RIGHT].active ? 2 : 0));
+  out.put(membrane_type);
+  out.put(detect_every);
+  out.put(band_given);
+  out.put(tolerance_given);
+  out.put(thickness);
+  // the state
+  out.put(static_cast<double>(checksum >> 32));
+  out.put(static_cast<double>(checksum & 0xffffffffu));
+  out.put(band_width);
+  out.put(search_width);
+  out.put(tolerance);
+  out.put(force_detection ? 1 : 0);
+  out.put(ylo_detected);
+  out.put(yhi_detected);
   for (const SideState &s : sides) {
-    buf.push_back(static_cast<double>(s.chain_tags.size()));
-    for (long t : s.chain_tags) buf.push_back(static_cast<double>(t));
-    buf.push_back(static_cast<double>(s.escaped_tags.size()));
-    for (size_t k = 0; k < s.escaped_tags.size(); k++) {
-      buf.push_back(static_cast<double>(s.escaped_tags[k]));
-      buf.push_back(s.escaped_radius[k]);
-    }
+    out.put_tags(s.chain_tags);
+    out.put_tags(s.escaped_tags);
+    for (double r : s.escaped_radius) out.put(r);
+    out.put_watch(s.watch);
+    out.put_disks(s.watch_band);
+    out.put(s.warned ? 1 : 0);
   }
-  buf.push_back(static_cast<double>(observed_type.size()));
-  for (const auto &entry : observed_type) {
-    buf.push_back(static_cast<double>(entry.first));
-    buf.push_back(static_cast<double>(entry.second));
-  }
-  buf.push_back(static_cast<double>(redetections));
-  buf.push_back(static_cast<double>(failures));
-  buf.push_back(static_cast<double>(widenings));
+  for (bigint c : {redetections, failures, widenings, changes}) out.put(static_cast<double>(c));
+  out.put(inertial);
+  out.put(static_cast<double>(inertial_step0));
+  out.put(inertial_height0);
+  out.put(inertial_above_before ? 1 : 0);
+  out.put(warned_inertial ? 1 : 0);
+  out.put(warned_chain_step ? 1 : 0);
+  const std::vector<double> &rec = out.finish();
   if (comm->me == 0) {
-    int size = static_cast<int>(buf.size() * sizeof(double));
+    const int size = static_cast<int>(rec.size() * sizeof(double));
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(buf.data(), sizeof(double), buf.size(), fp);
+    fwrite(rec.data(), sizeof(double), rec.size(), fp);
   }
+}
+
+int FixMembrane2d::pack_restart(int i, double *buf)
+{
+  // called after LIGGGHTS packed atom i with its own type
+  if (i < static_cast<int>(restored_for_restart.size()) && restored_for_restart[i]) {
+    atom->type[i] = membrane_type;
+    restored_for_restart[i] = 0;
+  }
+  buf[0] = 1;
+  return 1;
 }
 
 void FixMembrane2d::restart(char *raw)
 {
-  const double *buf = reinterpret_cast<const double *>(raw);
-  size_t m = 0;
+  membrane::RecordReader in(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double));
+  if (!in.ok())
+    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " + in.error() +
+                          "; read it with the version that wrote it, or define this fix with another ID "
+                          "(the chains are then found again)").c_str());
+  const int sides_mask = static_cast<int>(in.get());
+  const int type = static_cast<int>(in.get());
+  const int every = static_cast<int>(in.get());
+  const double band = in.get(), tol = in.get(), thick = in.get();
+  const int mask_now = (sides[LEFT].active ? 1 : 0) + (sides[RIGHT].active ? 2 : 0);
+  if (sides_mask != mask_now || type != membrane_type || every != detect_every || band != band_given ||
+      tol != tolerance_given || thick != thickness) {
+    if (comm->me == 0)
+      error->warning(FLERR, msg(std::string("fix ") + id + " is defined otherwise than in the restart file "
+                                "(sides, frictionless, every, band, tolerance or thickness): its chains are "
+                                "found again at the first step and its counters start from 0").c_str());
+    return;
+  }
+  const std::uint64_t hi = static_cast<std::uint64_t>(in.get()), lo = static_cast<std::uint64_t>(in.get());
+  state_checksum = (hi << 32) | lo;
+  band_width = in.get();
+  search_width = in.get();
+  tolerance = in.get();
+  force_detection = in.get() != 0.0;
+  ylo_detected = in.get();
+  yhi_detected = in.get();
   for (SideState &s : sides) {
-    const size_t nchain = static_cast<size_t>(buf[m++]);
-    s.chain_tags.resize(nchain);
-    for (size_t k = 0; k < nchain; k++) s.chain_tags[k] = static_cast<long>(buf[m++]);
-    const size_t nesc = static_cast<size_t>(buf[m++]);
-    s.escaped_tags.resize(nesc);
-    s.escaped_radius.resize(nesc);
-    for (size_t k = 0; k < nesc; k++) {
-      s.escaped_tags[k] = static_cast<long>(buf[m++]);
-      s.escaped_radius[k] = buf[m++];
-    }
+    in.get_tags(s.chain_tags);
+    in.get_tags(s.escaped_tags);
+    s.escaped_radius.resize(s.escaped_tags.size());
+    for (double &r : s.escaped_radius) r = in.get();
+    in.get_watch(s.watch);
+    in.get_disks(s.watch_band);
+    s.now = s.watch_band;
+    s.warned = in.get() != 0.0;
   }
-  const size_t ntypes = static_cast<size_t>(buf[m++]);
-  observed_type.clear();
-  for (size_t k = 0; k < ntypes; k++) {
-    const long tag = static_cast<long>(buf[m++]);
-    observed_type[tag] = static_cast<int>(buf[m++]);
-  }
-  redetections = static_cast<bigint>(buf[m++]);
-  failures = static_cast<bigint>(buf[m++]);
-  widenings = static_cast<bigint>(buf[m++]);
+  for (bigint *c : {&redetections, &failures, &widenings, &changes}) *c = static_cast<bigint>(in.get());
+  inertial = in.get();
+  inertial_step0 = static_cast<bigint>(in.get());
+  inertial_height0 = in.get();
+  inertial_above_before = in.get() != 0.0;
+  warned_inertial = in.get() != 0.0;
+  warned_chain_step = in.get() != 0.0;
+  if (!in.finished())
+    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " +
+                          in.error()).c_str());
+  state_kept = true;
+  build_watch_list();
 }
 
 /* ---------------------------------------------------------------------- */

@@ -16,6 +16,7 @@ FixStyle(membrane2d,FixMembrane2d)
 #ifndef LMP_FIX_MEMBRANE2D_H
 #define LMP_FIX_MEMBRANE2D_H
 
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -36,9 +37,14 @@ class FixMembrane2d : public Fix {
   void setup(int);
   void pre_force(int);
   void post_force(int);
+  void post_run();
   double compute_vector(int);
   void write_restart(FILE *);
   void restart(char *);
+  int pack_restart(int, double *);
+  void unpack_restart(int, int) {}
+  int size_restart(int) { return 1; }
+  int maxsize_restart() { return 1; }
   double memory_usage();
   // LIGGGHTS sizes its per-type-pair contact tables by the types atoms and fixes
   // report: the frictionless type may not be on any atom before the first run.
@@ -59,11 +65,13 @@ class FixMembrane2d : public Fix {
     bool active = false;
     std::vector<long> chain_tags;        // bottom -> top, kept between detections
     std::vector<long> escaped_tags;
+    std::vector<long> forgotten_tags, forgotten_escaped;   // of the last run, when not kept
     std::vector<double> escaped_radius;
     membrane::BandSlices slices;
     std::vector<membrane::Disk> band;    // gathered at the last detection
     std::vector<int> band_type;          // type of each band disk
     std::vector<membrane::Disk> chain_disks;  // current positions, chain order
+    std::vector<int> chain_types;             // current types, chain order
     membrane::DetectionWatch watch;            // every auto: what the last search depended on
     std::vector<membrane::Disk> watch_band;   // the band it searched, as it was then
     std::vector<membrane::Disk> now;          // the same, watched disks at their current positions
@@ -78,6 +86,7 @@ class FixMembrane2d : public Fix {
   double band_width;       // <= 0: 4 x D50 of the group, set in init()
   double search_width;     // band width of the next search: band_width, or wider once widened
   double tolerance;        // < 0: 0.02 x D50
+  double band_given, tolerance_given;   // as given (-1: default), compared on restart
   double d50;
   double density;          // group mass / group disk area [kg/m^2 per unit thickness]
   int detect_every;        // 0: auto (when the chain can have changed)
@@ -91,6 +100,15 @@ class FixMembrane2d : public Fix {
   membrane::ChainResult result;
   std::vector<int> result_buf;         // a side's chain search, broadcast by the rank that ran it
   std::map<long, int> observed_type;   // chain tag -> its own (not frictionless) type
+  // Between runs (and in restart files) every disk carries its own type: the
+  // chain disks take the frictionless type while the fix runs.
+  bool types_applied = false;
+  std::vector<char> restored_for_restart;   // local atoms write_restart gave their own type back
+  // The chain state is kept from one run to the next (and through restart
+  // files) when the group's disks are as they were: same tags, types, radii
+  // and positions, checked by a checksum at the start of the run.
+  bool state_kept = false;
+  std::uint64_t state_checksum = 0;
   std::vector<int> slice_of_atom;      // band slice of each local disk
   std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
 
@@ -127,6 +145,12 @@ class FixMembrane2d : public Fix {
   std::vector<int> recvcounts, displs;
 
   void evaluate_platens();
+  void check_other_membranes();
+  void check_tolerance();
+  std::uint64_t group_checksum();
+  void forget_state();
+  void apply_types();
+  void restore_types();
   void check_platens();
   void check_chain_step();
   void check_inertial_number();
