@@ -1,0 +1,365 @@
+#!/usr/bin/env python3
+"""Table-driven adversarial cases for the four styles, run through liggghts-membrane.
+
+    run_cases.py --exe build/app/liggghts-membrane cases/B_variables.cases [more.cases]
+    run_cases.py --exe ... --case band_negative cases/A_membrane.cases   # one case
+    run_cases.py --list                                                  # counts per class
+    run_cases.py -j 2                                                    # every cases/*.cases
+
+A .cases file is a list of blocks, one per case ('#' at column 0 and blank
+lines are comments). A block starts with 'case NAME' and holds directives and
+input lines ('|' then the LIGGGHTS command):
+
+    case band_negative
+      setup  block n=4 rows=4
+      ranks  1, 2 grid 1 2 1
+      error  Fix membrane2d: keyword 'band' = -1: must be a positive number
+      | fix m all membrane2d pressure 1e5 ylo ${ylo} yhi ${yhi} band -1
+      | run 0
+
+Directives:
+  setup NAME... [var=value...]  include setups/NAME.inc in order, after
+                                'variable var index value' for each var=value
+                                (the set-ups read their parameters as index
+                                variables); 'setup none': the commands do it all
+  ranks CONFIG, CONFIG...       run on each: '1', '2', '2 grid PX PY 1' (the
+                                grid reaches 'processors ${px} ${py} 1' of
+                                setups/prelude.inc); default '1'
+  error TEXT                    the run must fail (non-zero exit, no signal, no
+                                timeout) with TEXT in its output
+  output TEXT / no-output TEXT  TEXT must (not) be in the output
+  expect NAME VALUE TOL         RESULT NAME within TOL (absolute) of VALUE;
+  expect NAME VALUE rel TOL     ... relative; 'expect NAME > V' (or <): a bound
+  finite                        every RESULT value is a finite number
+  same [RTOL [ATOL]]            every RESULT value equal on all the rank
+                                configurations (default rtol 1e-10, atol 0)
+  timeout SECONDS               per run (default 120)
+  memory MB                     limit each rank's address space (ulimit -v): a
+                                run that needs more must fail cleanly, not abort
+  note TEXT                     a comment shown with --list -v
+
+The input prints values as:  print "RESULT name ${v}"  (or $(f_mem[1])).
+A run that is killed by a signal (segfault, abort: exit 134/139, an uncaught
+C++ exception), times out, or prints NaN/inf for an expected value fails its
+case whatever the expectation. ${testdir} is the setups folder.
+Each run works in its own temporary folder (files the case writes go there).
+"""
+import argparse
+import concurrent.futures
+import math
+import os
+import re
+import sys
+import tempfile
+from collections import OrderedDict
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "scripts"))
+import run_script  # noqa: E402  (tests/scripts/run_script.py: run() and the RESULT format)
+
+SETUPS = os.path.join(HERE, "setups")
+DEFAULT_TIMEOUT = 120
+CRASH_TEXT = re.compile(r"Segmentation fault|signal 11|exited on signal|terminate called|"
+                        r"Aborted \(core dumped\)|Floating point exception|double free|"
+                        r"corrupted|stack smashing|std::bad_alloc")
+DIRECTIVES = ("setup", "ranks", "error", "output", "no-output", "expect", "finite", "same",
+              "timeout", "memory", "note")
+
+
+class Case:
+    def __init__(self, name, path, line):
+        self.name, self.path, self.line = name, path, line
+        self.cls = os.path.basename(path).split("_")[0].split(".")[0]
+        self.setups, self.vars = [], []
+        self.ranks = None
+        self.errors, self.outputs, self.no_outputs, self.expects = [], [], [], []
+        self.finite = False
+        self.same = None
+        self.timeout = DEFAULT_TIMEOUT
+        self.memory_mb = None
+        self.notes = []
+        self.commands = []
+
+    def configs(self):
+        return self.ranks or [(1, None)]
+
+
+def parse_ranks(text, where):
+    out = []
+    for item in text.split(","):
+        w = item.split()
+        if len(w) == 1 and w[0].isdigit():
+            out.append((int(w[0]), None))
+        elif len(w) == 5 and w[0].isdigit() and w[1] == "grid":
+            out.append((int(w[0]), tuple(w[2:])))
+        else:
+            raise SystemExit("%s: bad rank configuration '%s' (want N or N grid PX PY PZ)"
+                             % (where, item.strip()))
+    return out
+
+
+def parse_file(path):
+    cases, case = [], None
+    with open(path) as f:
+        for lineno, raw in enumerate(f, 1):
+            where = "%s:%d" % (path, lineno)
+            line = raw.rstrip("\n")
+            stripped = line.strip()
+            if not stripped or line.startswith("#"):
+                continue
+            if stripped.startswith("|"):
+                if case is None:
+                    raise SystemExit("%s: input line outside a case" % where)
+                case.commands.append(stripped[1:].lstrip() if stripped != "|" else "")
+                continue
+            word, _, rest = stripped.partition(" ")
+            rest = rest.strip()
+            if word == "case":
+                if not rest or " " in rest:
+                    raise SystemExit("%s: 'case NAME' (one word)" % where)
+                case = Case(rest, path, lineno)
+                cases.append(case)
+                continue
+            if case is None or word not in DIRECTIVES:
+                raise SystemExit("%s: unknown line '%s'" % (where, stripped))
+            if word == "setup":
+                for w in rest.split():
+                    if "=" in w:
+                        case.vars.append(tuple(w.split("=", 1)))
+                    elif w != "none":
+                        if not os.path.exists(os.path.join(SETUPS, w + ".inc")):
+                            raise SystemExit("%s: no set-up setups/%s.inc" % (where, w))
+                        case.setups.append(w)
+            elif word == "ranks":
+                case.ranks = (case.ranks or []) + parse_ranks(rest, where)
+            elif word == "error":
+                case.errors.append(rest)
+            elif word == "output":
+                case.outputs.append(rest)
+            elif word == "no-output":
+                case.no_outputs.append(rest)
+            elif word == "expect":
+                w = rest.split()
+                if not (len(w) == 3 or (len(w) == 4 and w[2] == "rel")):
+                    raise SystemExit("%s: expect NAME VALUE TOL | NAME VALUE rel TOL | NAME > V" % where)
+                case.expects.append(w)
+            elif word == "finite":
+                case.finite = True
+            elif word == "same":
+                w = [float(x) for x in rest.split()]
+                case.same = (w + [1e-10, 0.0][len(w):])[:2]
+            elif word == "timeout":
+                case.timeout = int(rest)
+            elif word == "memory":
+                case.memory_mb = int(rest)
+            elif word == "note":
+                case.notes.append(rest)
+    names = [c.name for c in cases]
+    for c in cases:
+        if names.count(c.name) > 1:
+            raise SystemExit("%s: case '%s' is defined twice" % (path, c.name))
+        if not c.commands:
+            raise SystemExit("%s:%d: case '%s' has no input lines" % (path, c.line, c.name))
+        if not (c.errors or c.outputs or c.no_outputs or c.expects or c.finite or c.same):
+            raise SystemExit("%s:%d: case '%s' has no expectation" % (path, c.line, c.name))
+        if c.errors and (c.expects or c.finite or c.same):
+            raise SystemExit("%s:%d: case '%s': 'error' cannot go with values" % (path, c.line, c.name))
+        if c.same and len(c.configs()) < 2:
+            raise SystemExit("%s:%d: case '%s': 'same' needs two rank configurations"
+                             % (path, c.line, c.name))
+    return cases
+
+
+def script_text(case, grid):
+    lines = ["# case %s (%s:%d)" % (case.name, os.path.basename(case.path), case.line)]
+    if grid:
+        lines += ["variable        px index %s" % grid[0], "variable        py index %s" % grid[1]]
+        if grid[2] != "1":
+            raise SystemExit("case %s: the grid of a 2D box is PX PY 1" % case.name)
+    lines += ["variable        %s index %s" % kv for kv in case.vars]
+    lines += ["include         ${testdir}/%s.inc" % s for s in case.setups]
+    lines += case.commands
+    return "\n".join(lines) + "\n"
+
+
+def crashed(rc, out):
+    """A signal (segfault, abort, uncaught exception), directly or through mpirun."""
+    return rc < 0 or rc in (134, 136, 139) or (rc != 0 and CRASH_TEXT.search(out) is not None)
+
+
+def error_line(out):
+    for line in out.splitlines():
+        if "ERROR" in line:
+            return line.strip()
+    lines = [l.strip() for l in out.strip().splitlines() if l.strip()]
+    return lines[-1] if lines else "(no output)"
+
+
+def parse_results(out):
+    vals = OrderedDict()
+    for name, text in run_script.RESULT.findall(out):
+        try:
+            vals[name] = float(text)
+        except ValueError:
+            vals[name] = float("nan")   # unparsable ('${v}', garbage): counts as not finite
+    return vals
+
+
+def check_values(case, vals, label):
+    fails = []
+    for w in case.expects:
+        name = w[0]
+        if name not in vals:
+            fails.append("%s: RESULT %s not printed" % (label, name))
+            continue
+        v = vals[name]
+        if not math.isfinite(v):
+            fails.append("%s: %s = %r (not finite)" % (label, name, v))
+            continue
+        if w[1] in ("<", ">"):
+            bound = float(w[2])
+            ok = v > bound if w[1] == ">" else v < bound
+            want = "%s %s" % (w[1], w[2])
+        else:
+            target = float(w[1])
+            tol = float(w[3]) * abs(target) if w[2] == "rel" else float(w[2])
+            ok = abs(v - target) <= tol
+            want = "%r +- %g" % (target, tol)
+        if not ok:
+            fails.append("%s: %s = %r, want %s" % (label, name, v, want))
+    if case.finite:
+        if not vals:
+            fails.append("%s: no RESULT printed" % label)
+        bad = ["%s = %r" % (k, v) for k, v in vals.items() if not math.isfinite(v)]
+        if bad:
+            fails.append("%s: not finite: %s" % (label, ", ".join(bad)))
+    return fails
+
+
+def run_case(case, exe, keep=None):
+    """Returns (ok, list of failure texts)."""
+    fails, runs = [], []
+    for np_, grid in case.configs():
+        label = "np=%d%s" % (np_, " grid %s" % " ".join(grid) if grid else "")
+        with tempfile.TemporaryDirectory(prefix="adv_") as work:
+            script = os.path.join(work, "case.in")
+            text = script_text(case, grid)
+            with open(script, "w") as f:
+                f.write(text)
+            if keep:
+                os.makedirs(keep, exist_ok=True)
+                tag = "%s.np%d%s.in" % (case.name, np_, "".join(grid) if grid else "")
+                with open(os.path.join(keep, tag), "w") as f:
+                    f.write(text)
+            run_exe = exe
+            if case.memory_mb:
+                # each rank runs through this wrapper (run_script.run takes the executable only)
+                run_exe = os.path.join(work, "limited.sh")
+                with open(run_exe, "w") as f:
+                    f.write('#!/bin/sh\nulimit -v %d\nexec "%s" "$@"\n' % (case.memory_mb * 1024, exe))
+                os.chmod(run_exe, 0o755)
+            rc, out = run_script.run(run_exe, np_, script, work, case.timeout, SETUPS)
+        timed_out = rc == 124 and out.startswith("TIMEOUT")
+        if timed_out:
+            fails.append("%s: hangs (timeout after %d s)" % (label, case.timeout))
+            continue
+        if crashed(rc, out):
+            fails.append("%s: crash (exit %d): %s" % (label, rc, error_line(out)))
+            continue
+        if case.errors:
+            if rc == 0:
+                fails.append("%s: no error (exit 0), wanted '%s'" % (label, case.errors[0]))
+            for e in case.errors:
+                if rc != 0 and e not in out:
+                    fails.append("%s: wanted '%s', got: %s" % (label, e, error_line(out)))
+        elif rc != 0:
+            fails.append("%s: failed (exit %d): %s" % (label, rc, error_line(out)))
+            continue
+        for t in case.outputs:
+            if t not in out:
+                fails.append("%s: output lacks '%s'" % (label, t))
+        for t in case.no_outputs:
+            if t in out:
+                fails.append("%s: output has '%s'" % (label, t))
+        if not case.errors:
+            vals = parse_results(out)
+            fails += check_values(case, vals, label)
+            runs.append((label, vals))
+    if case.same and len(runs) == len(case.configs()):
+        rtol, atol = case.same
+        base_label, base = runs[0]
+        if not base:
+            fails.append("same: no RESULT printed")
+        for label, vals in runs[1:]:
+            for k, v in base.items():
+                w = vals.get(k)
+                if w is None:
+                    fails.append("same: %s missing on %s" % (k, label))
+                elif not (math.isfinite(v) and math.isfinite(w)):
+                    fails.append("same: %s = %r (%s), %r (%s)" % (k, v, base_label, w, label))
+                elif abs(w - v) > rtol * max(abs(v), abs(w)) + atol:
+                    fails.append("same: %s = %r (%s) vs %r (%s)" % (k, v, base_label, w, label))
+            for k in vals:
+                if k not in base:
+                    fails.append("same: %s printed on %s only" % (k, label))
+    return not fails, fails
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--exe", help="liggghts-membrane (default: build/app/liggghts-membrane)")
+    ap.add_argument("--case", action="append", help="run only the case(s) of this name")
+    ap.add_argument("--list", action="store_true", help="print the case count per class")
+    ap.add_argument("-v", "--verbose", action="store_true", help="with --list: every case")
+    ap.add_argument("--keep", help="also write each generated input script into this folder")
+    ap.add_argument("-j", "--jobs", type=int, default=1,
+                    help="cases run at the same time (runs mostly wait for MPI start-up)")
+    ap.add_argument("files", nargs="*", help=".cases files (default: cases/*.cases)")
+    a = ap.parse_args()
+    files = a.files or sorted(os.path.join(HERE, "cases", f)
+                              for f in os.listdir(os.path.join(HERE, "cases")) if f.endswith(".cases"))
+    cases = [c for f in files for c in parse_file(f)]
+
+    if a.list:
+        per_class, per_file = OrderedDict(), OrderedDict()
+        for c in cases:
+            per_class[c.cls] = per_class.get(c.cls, 0) + 1
+            per_file[os.path.basename(c.path)] = per_file.get(os.path.basename(c.path), 0) + 1
+        for f, n in per_file.items():
+            print("%-32s %4d" % (f, n))
+            if a.verbose:
+                for c in cases:
+                    if os.path.basename(c.path) == f:
+                        cfg = ", ".join("%d%s" % (n_, " grid " + " ".join(g) if g else "")
+                                        for n_, g in c.configs())
+                        print("    %-36s [%s] %s" % (c.name, cfg, "; ".join(c.notes)))
+        print("-" * 37)
+        for k in sorted(per_class):
+            print("class %-26s %4d" % (k, per_class[k]))
+        print("%-32s %4d" % ("total", len(cases)))
+        return 0
+
+    if a.case:
+        cases = [c for c in cases if c.name in a.case]
+        if not cases:
+            print("no case named %s" % ", ".join(a.case))
+            return 1
+    exe = os.path.abspath(a.exe or os.path.join(HERE, "..", "..", "build", "app", "liggghts-membrane"))
+    if not os.access(exe, os.X_OK):
+        print("no executable %s (build first: tools/build.sh)" % exe)
+        return 1
+    nfail = 0
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+        futures = [pool.submit(run_case, c, exe, a.keep) for c in cases]
+        for c, fut in zip(cases, futures):   # reported in file order
+            ok, fails = fut.result()
+            print("%s %s %s" % ("ok  " if ok else "FAIL", c.cls, c.name), flush=True)
+            for f in fails:
+                print("       " + f)
+            nfail += 0 if ok else 1
+    print("%d cases: %d passed, %d failed" % (len(cases), len(cases) - nfail, nfail))
+    return 1 if nfail else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
