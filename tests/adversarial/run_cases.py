@@ -63,7 +63,7 @@ CRASH_TEXT = re.compile(r"Segmentation fault|signal 11|exited on signal|terminat
                         r"Aborted \(core dumped\)|Floating point exception|double free|"
                         r"corrupted|stack smashing|std::bad_alloc")
 DIRECTIVES = ("setup", "ranks", "error", "output", "no-output", "expect", "finite", "same",
-              "timeout", "memory", "note")
+              "timeout", "memory", "note", "prepare")
 
 
 class Case:
@@ -79,6 +79,8 @@ class Case:
         self.memory_mb = None
         self.notes = []
         self.commands = []
+        self.prepare_np = None     # 'prepare NP': the set-ups and the '>' lines run first,
+        self.prepare_commands = []  # on NP ranks in the same folder (e.g. to write a restart)
 
     def configs(self):
         return self.ranks or [(1, None)]
@@ -106,6 +108,11 @@ def parse_file(path):
             line = raw.rstrip("\n")
             stripped = line.strip()
             if not stripped or line.startswith("#"):
+                continue
+            if stripped.startswith(">"):
+                if case is None:
+                    raise SystemExit("%s: input line outside a case" % where)
+                case.prepare_commands.append(stripped[1:].lstrip())
                 continue
             if stripped.startswith("|"):
                 if case is None:
@@ -154,6 +161,8 @@ def parse_file(path):
                 case.memory_mb = int(rest)
             elif word == "note":
                 case.notes.append(rest)
+            elif word == "prepare":
+                case.prepare_np = int(rest)
     names = [c.name for c in cases]
     for c in cases:
         if names.count(c.name) > 1:
@@ -170,15 +179,18 @@ def parse_file(path):
     return cases
 
 
-def script_text(case, grid):
+def script_text(case, grid, stage="main"):
+    """The input of a rank configuration; with 'prepare', the set-ups go to the
+    prepare stage and the main stage has only its own lines."""
     lines = ["# case %s (%s:%d)" % (case.name, os.path.basename(case.path), case.line)]
     if grid:
         lines += ["variable        px index %s" % grid[0], "variable        py index %s" % grid[1]]
         if grid[2] != "1":
             raise SystemExit("case %s: the grid of a 2D box is PX PY 1" % case.name)
     lines += ["variable        %s index %s" % kv for kv in case.vars]
-    lines += ["include         ${testdir}/%s.inc" % s for s in case.setups]
-    lines += case.commands
+    if stage == "prepare" or case.prepare_np is None:
+        lines += ["include         ${testdir}/%s.inc" % s for s in case.setups]
+    lines += case.prepare_commands if stage == "prepare" else case.commands
     return "\n".join(lines) + "\n"
 
 
@@ -258,6 +270,15 @@ def run_case(case, exe, keep=None):
                 with open(run_exe, "w") as f:
                     f.write('#!/bin/sh\nulimit -v %d\nexec "%s" "$@"\n' % (case.memory_mb * 1024, exe))
                 os.chmod(run_exe, 0o755)
+            if case.prepare_np:
+                prepare = os.path.join(work, "prepare.in")
+                with open(prepare, "w") as f:
+                    f.write(script_text(case, None, "prepare"))
+                rc, out = run_script.run(exe, case.prepare_np, prepare, work, case.timeout, SETUPS)
+                if rc != 0:
+                    fails.append("%s: the prepare stage (np=%d) failed (exit %d): %s"
+                                 % (label, case.prepare_np, rc, error_line(out)))
+                    continue
             rc, out = run_script.run(run_exe, np_, script, work, case.timeout, SETUPS)
         timed_out = rc == 124 and out.startswith("TIMEOUT")
         if timed_out:
