@@ -66,6 +66,8 @@ const char *const KEYWORDS[] = {"pressure", "ylo", "yhi", "sides", "band", "tole
 
 // a gap tolerance beyond this many D50 bridges real gaps between disks
 constexpr double TOLERANCE_LIMIT = 0.25;
+// a band narrower than this many D50 is cut into too many slices (membrane_band.cpp)
+constexpr double BAND_MIN = 0.01;
 
 }  // namespace
 
@@ -137,6 +139,7 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
       const char *usage = "polyline N FILE: write the chains every N >= 1 steps to FILE";
       polyline_every = args.integer(1, 1000000000L, usage);
       const std::string file = args.value(usage);
+      if (file.empty()) args.bad("the file name is empty", usage);
       for (const char *k : KEYWORDS)
         if (file == k) args.bad("the file name is the keyword '" + file + "'", usage);
       polyline_file = new char[file.size() + 1];
@@ -268,6 +271,11 @@ void FixMembrane2d::check_other_membranes()
 
 void FixMembrane2d::check_tolerance()
 {
+  if (band_width < BAND_MIN * d50)
+    error->all(FLERR, keyword_message(msg(""), "band", number_text(band_width),
+                                      "is " + number_text(band_width / d50) + " x D50 (D50 = " + number_text(d50) +
+                                      "); the band is a width in distance units, at least " + number_text(BAND_MIN) +
+                                      " x D50 (default 4 x D50 = " + number_text(4.0 * d50) + ")").c_str());
   if (!(tolerance > TOLERANCE_LIMIT * d50)) return;
   char buf[512];
   snprintf(buf, sizeof(buf),
@@ -667,8 +675,9 @@ void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::v
 
 /* ----------------------------------------------------------------------
    The disks whose positions every rank needs at every step: the chain disks
-   of both sides (for the forces) and, with every auto, the disks of the
-   watched relations. One list, so that one allgather per step serves all.
+   of both sides (for the forces), the escapees (so that a lost one stops
+   the run) and, with every auto, the disks of the watched relations. One
+   list, so that one allgather per step serves all.
 ------------------------------------------------------------------------- */
 
 void FixMembrane2d::build_watch_list()
@@ -683,6 +692,11 @@ void FixMembrane2d::build_watch_list()
       WatchEntry e;
       e.tag = s.chain_tags[c];
       e.chain_index[k] = static_cast<int>(c);
+      watch_list.push_back(e);
+    }
+    for (long tag : s.escaped_tags) {
+      WatchEntry e;   // no role: gathered only so that its loss is seen
+      e.tag = tag;
       watch_list.push_back(e);
     }
     if (detect_every == 0 && !s.watch.always)
@@ -751,7 +765,7 @@ void FixMembrane2d::gather_watched()
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
   if (recvbuf.size() != WATCH_FIELDS * (watch_list.size() + comm->nprocs))
-    error->all(FLERR, msg("a chain or band disk was lost at step " + std::to_string(update->ntimestep) +
+    error->all(FLERR, msg("a chain, escaped or band disk was lost at step " + std::to_string(update->ntimestep) +
                           " (it left the box; 'thermo_modify lost ignore' hides this): the membrane cannot "
                           "hold a sample whose outer disks fly off; check the time step, the pressure and "
                           "the platens").c_str());
