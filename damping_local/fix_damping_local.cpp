@@ -4,7 +4,8 @@
 
 #include "fix_damping_local.h"
 
-#include <cmath>
+#include <mpi.h>
+
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -22,7 +23,25 @@ using namespace FixConst;
 
 namespace {
 
-std::string msg(const std::string &text) { return "Fix damping/local: " + text; }
+const std::string PREFIX = "Fix damping/local: ";
+std::string msg(const std::string &text) { return PREFIX + text; }
+
+// Fixes whose post_force adds no force: it removes, projects or prescribes
+// force components (a damping force computed before is removed, projected or
+// replaced with the rest, as it should be), or does not touch forces at all,
+// so they may come after this fix.
+bool adds_no_force(const char *style)
+{
+  static const char *const constraints[] = {
+      "enforce2d", "freeze", "setforce", "lineforce", "planeforce", "damping/local",
+      // these read the force or act on heat and species only
+      "store/force", "heat/gran", "heat/gran/conduction", "couple/cfd/convection",
+      "couple/cfd/radiation", "couple/cfd/convectiveImpl", "couple/cfd/speciesConvection",
+      "sph/mixidx"};
+  for (const char *c : constraints)
+    if (strcmp(style, c) == 0) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -30,7 +49,7 @@ std::string msg(const std::string &text) { return "Fix damping/local: " + text; 
 
 FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
-  alpha(0.0), damp_torque(true), warned_order(false)
+  alpha(0.0), damp_torque(true)
 {
   bool have_alpha = false, torque_given = false;
   int iarg = 3;
@@ -75,27 +94,36 @@ int FixDampingLocal::setmask()
   return POST_FORCE;
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   Forces that fixes defined after this one add in post_force to atoms of
+   this group are not damped: warn once per such fix. Every rank takes part
+   (the groups' common atoms are counted over the ranks); rank 0 words it.
+------------------------------------------------------------------------- */
 
 void FixDampingLocal::init()
 {
   if (strstr(update->integrate_style, "verlet") == nullptr)
     error->all(FLERR, msg("works with run_style verlet only").c_str());
 
-  // Forces added in post_force by fixes defined after this one are not damped.
-  // fix enforce2d only zeroes components, other damping/local fixes are fine.
-  if (comm->me != 0 || warned_order) return;
   int self = -1;
   for (int i = 0; i < modify->nfix; i++)
     if (modify->fix[i] == this) self = i;
   for (int i = self + 1; i < modify->nfix; i++) {
     const Fix *other = modify->fix[i];
-    if (!(modify->fmask[i] & POST_FORCE)) continue;
-    if (strcmp(other->style, "enforce2d") == 0 || strcmp(other->style, style) == 0) continue;
-    error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
-                              ") is defined after fix " + id + " and acts in post_force: the forces it adds "
-                              "are not damped; define fix " + id + " last").c_str());
-    warned_order = true;
+    if (!(modify->fmask[i] & POST_FORCE) || adds_no_force(other->style)) continue;
+    if (warned_order.count(other->id)) continue;
+    long common = 0;
+    for (int j = 0; j < atom->nlocal; j++)
+      if ((atom->mask[j] & groupbit) && (atom->mask[j] & other->groupbit)) common++;
+    MPI_Allreduce(MPI_IN_PLACE, &common, 1, MPI_LONG, MPI_SUM, world);
+    if (common == 0) continue;
+    warned_order.insert(other->id);
+    if (comm->me == 0)
+      error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
+                                ") is defined after fix " + id + " and acts in post_force on " +
+                                std::to_string(common) + " atom(s) that fix " + id + " damps: "
+                                "forces it adds to them are not damped; define fix " + id +
+                                " after fix " + other->id).c_str());
   }
 }
 
