@@ -6,7 +6,6 @@
 
 #include <mpi.h>
 
-#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -17,6 +16,7 @@
 #include "update.h"
 
 #include "local_damping.h"
+#include "style_args.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -25,6 +25,10 @@ namespace {
 
 const std::string PREFIX = "Fix damping/local: ";
 std::string msg(const std::string &text) { return PREFIX + text; }
+
+const char *const ALPHA_USAGE =
+    "alpha A, the local damping coefficient, a number >= 0 and < 1 (PFC's default is 0.7)";
+const char *const TORQUE_USAGE = "torque yes or no, damp the torque as well (default yes)";
 
 // Fixes whose post_force adds no force: it removes, projects or prescribes
 // force components (a damping force computed before is removed, projected or
@@ -51,40 +55,30 @@ FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
   alpha(0.0), damp_torque(true)
 {
-  bool have_alpha = false, torque_given = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key != "alpha" && key != "torque")
-      error->all(FLERR, msg("unknown keyword '" + key + "' (expected alpha or torque)").c_str());
-    if (iarg + 1 >= narg)
-      error->all(FLERR, msg("keyword '" + key + "' needs a value").c_str());
-    const std::string value = arg[iarg + 1];
-    if (key == "alpha") {
-      char *end = nullptr;
-      alpha = strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0')
-        error->all(FLERR, msg("alpha must be a number, got '" + value + "'").c_str());
-      if (!(alpha >= 0.0 && alpha < 1.0))
-        error->all(FLERR, msg("alpha must be >= 0 and < 1, got '" + value + "'").c_str());
-      have_alpha = true;
-    } else {
-      if (value != "yes" && value != "no")
-        error->all(FLERR, msg("torque must be yes or no, got '" + value + "'").c_str());
-      damp_torque = value == "yes";
-      torque_given = true;
-    }
-    iarg += 2;
-  }
-  if (!have_alpha) error->all(FLERR, msg("missing keyword 'alpha' (0 <= alpha < 1)").c_str());
-
   // without rotational degrees of freedom the default 'torque yes' has nothing to do
   const bool has_rotation = atom->torque_flag && atom->omega_flag;
-  if (damp_torque && !has_rotation) {
-    if (torque_given)
-      error->all(FLERR, msg("torque yes needs per-atom torque and omega (atom style sphere/granular)").c_str());
-    damp_torque = false;
+  bool have_alpha = false, torque_given = false;
+  StyleArgs args(lmp, PREFIX, narg, arg, 3);
+  while (args.more()) {
+    const std::string &key = args.keyword();
+    if (key == "alpha") {
+      alpha = args.number(ALPHA_USAGE);
+      if (!(alpha >= 0.0 && alpha < 1.0)) args.bad("must be a number >= 0 and < 1", ALPHA_USAGE);
+      have_alpha = true;
+    } else if (key == "torque") {
+      const std::string value = args.value(TORQUE_USAGE);
+      if (value != "yes" && value != "no") args.bad("must be yes or no", TORQUE_USAGE);
+      damp_torque = value == "yes";
+      if (damp_torque && !has_rotation)
+        args.bad("the atom style has no per-atom torque and angular velocity to damp "
+                 "(atom style sphere or granular has them)", "use torque no, or leave it out");
+      torque_given = true;
+    } else {
+      args.unknown("alpha, torque");
+    }
   }
+  if (!have_alpha) args.required("alpha", ALPHA_USAGE);
+  if (!torque_given && !has_rotation) damp_torque = false;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -103,7 +97,8 @@ int FixDampingLocal::setmask()
 void FixDampingLocal::init()
 {
   if (strstr(update->integrate_style, "verlet") == nullptr)
-    error->all(FLERR, msg("works with run_style verlet only").c_str());
+    error->all(FLERR, msg(std::string("works with run_style verlet only, not ") +
+                          update->integrate_style + "; use run_style verlet").c_str());
 
   int self = -1;
   for (int i = 0; i < modify->nfix; i++)
