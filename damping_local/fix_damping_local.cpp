@@ -37,7 +37,7 @@ const char *const TORQUE_USAGE = "torque yes or no, damp the torque as well (def
 bool adds_no_force(const char *style)
 {
   static const char *const constraints[] = {
-      "enforce2d", "freeze", "setforce", "lineforce", "planeforce", "damping/local",
+      "enforce2d", "freeze", "setforce", "lineforce", "planeforce",
       // these read the force or act on heat and species only
       "store/force", "heat/gran", "heat/gran/conduction", "couple/cfd/convection",
       "couple/cfd/radiation", "couple/cfd/convectiveImpl", "couple/cfd/speciesConvection",
@@ -90,7 +90,8 @@ int FixDampingLocal::setmask()
 
 /* ----------------------------------------------------------------------
    Forces that fixes defined after this one add in post_force to atoms of
-   this group are not damped: warn once per such fix. Every rank takes part
+   this group are not damped, and a later fix damping/local on the same
+   atoms damps them twice: warn once per such fix. Every rank takes part
    (the groups' common atoms are counted over the ranks); rank 0 words it.
 ------------------------------------------------------------------------- */
 
@@ -113,7 +114,13 @@ void FixDampingLocal::init()
     MPI_Allreduce(MPI_IN_PLACE, &common, 1, MPI_LONG, MPI_SUM, world);
     if (common == 0) continue;
     warned_order.insert(other->id);
-    if (comm->me == 0)
+    if (comm->me != 0) continue;
+    if (strcmp(other->style, style) == 0)
+      error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style + ") also damps " +
+                                std::to_string(common) + " atom(s) that fix " + id + " damps: their "
+                                "force is damped twice; give the two fixes groups without common "
+                                "atoms").c_str());
+    else
       error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
                                 ") is defined after fix " + id + " and acts in post_force on " +
                                 std::to_string(common) + " atom(s) that fix " + id + " damps: "
