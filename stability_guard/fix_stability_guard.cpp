@@ -96,6 +96,7 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
                                       "not ") + atom->atom_style + "; use atom_style granular").c_str());
 
   nevery = 100;
+  std::string ilimit_text;   // as written, when given
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
   // a limit that is a number > 0 and <= hi
   auto limit = [&](const char *usage, double hi) {
@@ -115,6 +116,7 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
       time_step_limit = limit(TIMESTEP_USAGE, 2.0);
     } else if (key == "ilimit") {
       inertial_limit = limit(ILIMIT_USAGE, 1.0);
+      ilimit_text = args.current_value();
     } else if (key == "inertial") {
       parse_inertial_value(args, rate_in, false);
       parse_inertial_value(args, pressure_in, true);
@@ -123,6 +125,10 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
       args.unknown("every, move, overlap, timestep, inertial, ilimit");
     }
   }
+  if (!ilimit_text.empty() && !check_inertial)
+    error->all(FLERR, keyword_message(PREFIX, "ilimit", ilimit_text,
+                                      "has no effect without keyword 'inertial'; add inertial R P, "
+                                      "or leave ilimit out").c_str());
 
   vector_flag = 1;
   size_vector = VECTOR_SIZE;
