@@ -4,8 +4,8 @@
 
 #include "fix_damping_local.h"
 
-#include <cmath>
-#include <cstdlib>
+#include <mpi.h>
+
 #include <cstring>
 #include <string>
 
@@ -16,13 +16,36 @@
 #include "update.h"
 
 #include "local_damping.h"
+#include "style_args.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
 
-std::string msg(const std::string &text) { return "Fix damping/local: " + text; }
+const std::string PREFIX = "Fix damping/local: ";
+std::string msg(const std::string &text) { return PREFIX + text; }
+
+const char *const ALPHA_USAGE =
+    "alpha A, the local damping coefficient, a number >= 0 and < 1 (PFC's default is 0.7)";
+const char *const TORQUE_USAGE = "torque yes or no, damp the torque as well (default yes)";
+
+// Fixes whose post_force adds no force: it removes, projects or prescribes
+// force components (a damping force computed before is removed, projected or
+// replaced with the rest, as it should be), or does not touch forces at all,
+// so they may come after this fix.
+bool adds_no_force(const char *style)
+{
+  static const char *const constraints[] = {
+      "enforce2d", "freeze", "setforce", "lineforce", "planeforce",
+      // these read the force or act on heat and species only
+      "store/force", "heat/gran", "heat/gran/conduction", "couple/cfd/convection",
+      "couple/cfd/radiation", "couple/cfd/convectiveImpl", "couple/cfd/speciesConvection",
+      "sph/mixidx"};
+  for (const char *c : constraints)
+    if (strcmp(style, c) == 0) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -30,42 +53,32 @@ std::string msg(const std::string &text) { return "Fix damping/local: " + text; 
 
 FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
-  alpha(0.0), damp_torque(true), warned_order(false)
+  alpha(0.0), damp_torque(true)
 {
-  bool have_alpha = false, torque_given = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key != "alpha" && key != "torque")
-      error->all(FLERR, msg("unknown keyword '" + key + "' (expected alpha or torque)").c_str());
-    if (iarg + 1 >= narg)
-      error->all(FLERR, msg("keyword '" + key + "' needs a value").c_str());
-    const std::string value = arg[iarg + 1];
-    if (key == "alpha") {
-      char *end = nullptr;
-      alpha = strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0')
-        error->all(FLERR, msg("alpha must be a number, got '" + value + "'").c_str());
-      if (!(alpha >= 0.0 && alpha < 1.0))
-        error->all(FLERR, msg("alpha must be >= 0 and < 1, got '" + value + "'").c_str());
-      have_alpha = true;
-    } else {
-      if (value != "yes" && value != "no")
-        error->all(FLERR, msg("torque must be yes or no, got '" + value + "'").c_str());
-      damp_torque = value == "yes";
-      torque_given = true;
-    }
-    iarg += 2;
-  }
-  if (!have_alpha) error->all(FLERR, msg("missing keyword 'alpha' (0 <= alpha < 1)").c_str());
-
   // without rotational degrees of freedom the default 'torque yes' has nothing to do
   const bool has_rotation = atom->torque_flag && atom->omega_flag;
-  if (damp_torque && !has_rotation) {
-    if (torque_given)
-      error->all(FLERR, msg("torque yes needs per-atom torque and omega (atom style sphere/granular)").c_str());
-    damp_torque = false;
+  bool have_alpha = false, torque_given = false;
+  StyleArgs args(lmp, PREFIX, narg, arg, 3);
+  while (args.more()) {
+    const std::string &key = args.keyword();
+    if (key == "alpha") {
+      alpha = args.number(ALPHA_USAGE);
+      if (!(alpha >= 0.0 && alpha < 1.0)) args.bad("must be a number >= 0 and < 1", ALPHA_USAGE);
+      have_alpha = true;
+    } else if (key == "torque") {
+      const std::string value = args.value(TORQUE_USAGE);
+      if (value != "yes" && value != "no") args.bad("must be yes or no", TORQUE_USAGE);
+      damp_torque = value == "yes";
+      if (damp_torque && !has_rotation)
+        args.bad("the atom style has no per-atom torque and angular velocity to damp "
+                 "(atom style sphere or granular has them)", "use torque no, or leave it out");
+      torque_given = true;
+    } else {
+      args.unknown("alpha, torque");
+    }
   }
+  if (!have_alpha) args.required("alpha", ALPHA_USAGE);
+  if (!torque_given && !has_rotation) damp_torque = false;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -75,27 +88,44 @@ int FixDampingLocal::setmask()
   return POST_FORCE;
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   Forces that fixes defined after this one add in post_force to atoms of
+   this group are not damped, and a later fix damping/local on the same
+   atoms damps them twice: warn once per such fix. Every rank takes part
+   (the groups' common atoms are counted over the ranks); rank 0 words it.
+------------------------------------------------------------------------- */
 
 void FixDampingLocal::init()
 {
   if (strstr(update->integrate_style, "verlet") == nullptr)
-    error->all(FLERR, msg("works with run_style verlet only").c_str());
+    error->all(FLERR, msg(std::string("works with run_style verlet only, not ") +
+                          update->integrate_style + "; use run_style verlet").c_str());
 
-  // Forces added in post_force by fixes defined after this one are not damped.
-  // fix enforce2d only zeroes components, other damping/local fixes are fine.
-  if (comm->me != 0 || warned_order) return;
   int self = -1;
   for (int i = 0; i < modify->nfix; i++)
     if (modify->fix[i] == this) self = i;
   for (int i = self + 1; i < modify->nfix; i++) {
     const Fix *other = modify->fix[i];
-    if (!(modify->fmask[i] & POST_FORCE)) continue;
-    if (strcmp(other->style, "enforce2d") == 0 || strcmp(other->style, style) == 0) continue;
-    error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
-                              ") is defined after fix " + id + " and acts in post_force: the forces it adds "
-                              "are not damped; define fix " + id + " last").c_str());
-    warned_order = true;
+    if (!(modify->fmask[i] & POST_FORCE) || adds_no_force(other->style)) continue;
+    if (warned_order.count(other->id)) continue;
+    long common = 0;
+    for (int j = 0; j < atom->nlocal; j++)
+      if ((atom->mask[j] & groupbit) && (atom->mask[j] & other->groupbit)) common++;
+    MPI_Allreduce(MPI_IN_PLACE, &common, 1, MPI_LONG, MPI_SUM, world);
+    if (common == 0) continue;
+    warned_order.insert(other->id);
+    if (comm->me != 0) continue;
+    if (strcmp(other->style, style) == 0)
+      error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style + ") also damps " +
+                                std::to_string(common) + " atom(s) that fix " + id + " damps: their "
+                                "force is damped twice; give the two fixes groups without common "
+                                "atoms").c_str());
+    else
+      error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
+                                ") is defined after fix " + id + " and acts in post_force on " +
+                                std::to_string(common) + " atom(s) that fix " + id + " damps: "
+                                "forces it adds to them are not damped; define fix " + id +
+                                " after fix " + other->id).c_str());
   }
 }
 

@@ -20,6 +20,9 @@ FixStyle(damping/local,FixDampingLocal)
 #ifndef LMP_FIX_DAMPING_LOCAL_H
 #define LMP_FIX_DAMPING_LOCAL_H
 
+#include <set>
+#include <string>
+
 #include "fix.h"
 
 namespace LAMMPS_NS {
@@ -35,7 +38,7 @@ class FixDampingLocal : public Fix {
  private:
   double alpha;
   bool damp_torque;
-  bool warned_order;   // the fix-order warning is given once
+  std::set<std::string> warned_order;   // fixes warned about (once each) for their order
 };
 
 }

@@ -23,11 +23,14 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "group.h"
 #include "neigh_list.h"
 #include "pair.h"
 #include "update.h"
 
 #include "contact_scales.h"
+#include "scalar_input.h"
+#include "style_args.h"
 #include "stability_checks.h"
 
 using namespace LAMMPS_NS;
@@ -36,7 +39,31 @@ using namespace FixConst;
 namespace {
 
 const std::string PREFIX = "Fix stability/guard: ";
+constexpr double SAFE_TIME_STEP_RATIO = 0.15;   // x sqrt(m_min/k_n), the published set-up
+constexpr double BLOW_UP_STEP_FRACTION = 0.05;  // |v| dt / r of a run that has blown up
 std::string msg(const std::string &text) { return PREFIX + text; }
+
+const char *const EVERY_USAGE = "every N, check every N steps (default 100)";
+const char *const MOVE_USAGE =
+    "move F, stop the run when a disk moves more than F x its radius in one step, "
+    "a number > 0 and <= 1 (default 0.05)";
+const char *const OVERLAP_USAGE =
+    "overlap F, warn when two disks overlap by more than F x the smaller radius, "
+    "a number > 0 and <= 1 (default 0.1)";
+const char *const TIMESTEP_USAGE =
+    "timestep F, warn when dt > F x sqrt(m_min/k_n), a number > 0 and <= 2 "
+    "(velocity Verlet is unstable above 2 even for one contact; default 0.3)";
+const char *const ILIMIT_USAGE =
+    "ilimit L, warn when the inertial number exceeds L, a number > 0 and <= 1 (default 1e-3)";
+const char *const INERTIAL_USAGE =
+    "inertial R P, the strain rate R >= 0 (1/time; use abs() for a signed rate) and the "
+    "pressure P > 0 (force/area), each a number or v_name of an equal-style variable";
+
+// %g of a computed value, with "nan" for every NaN (printf may say "-nan")
+std::string value_text(double v)
+{
+  return std::isnan(v) ? "nan" : number_text(v);
+}
 
 // a value and the atom ID it belongs to, for MPI_MAXLOC over the ranks
 struct ValueTag {
@@ -61,55 +88,74 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
   check_inertial(false), d50(0.0), density(0.0), natoms0(0),
   warned_overlap(false), warned_inertial(false), warnings(0)
 {
-  if (domain->dimension != 2) error->all(FLERR, msg("requires dimension 2").c_str());
-  if (!atom->radius_flag) error->all(FLERR, msg("requires atom style sphere (granular)").c_str());
+  if (domain->dimension != 2)
+    error->all(FLERR, msg("requires dimension 2 (this run has dimension " +
+                          std::to_string(domain->dimension) + "); use dimension 2").c_str());
+  if (!atom->radius_flag)
+    error->all(FLERR, msg(std::string("requires atom style sphere or granular (per-atom radius), "
+                                      "not ") + atom->atom_style + "; use atom_style granular").c_str());
 
   nevery = 100;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, msg("keyword '" + key + "' needs a value").c_str());
-    const std::string value = arg[iarg + 1];
-    auto positive_number = [&]() {
-      char *end = nullptr;
-      const double v = strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0' || !(v > 0.0) || !std::isfinite(v))
-        error->all(FLERR, msg(key + " must be a positive number, got '" + value + "'").c_str());
-      return v;
-    };
+  std::string ilimit_text;   // as written, when given
+  StyleArgs args(lmp, PREFIX, narg, arg, 3);
+  // a limit that is a number > 0 and <= hi
+  auto limit = [&](const char *usage, double hi) {
+    const double v = args.number(usage);
+    if (!(v > 0.0 && v <= hi)) args.bad("must be a number > 0 and <= " + number_text(hi), usage);
+    return v;
+  };
+  while (args.more()) {
+    const std::string &key = args.keyword();
     if (key == "every") {
-      char *end = nullptr;
-      const long n = strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || n < 1 || n > 1000000000L)
-        error->all(FLERR, msg("every must be an integer >= 1, got '" + value + "'").c_str());
-      nevery = static_cast<int>(n);
+      nevery = static_cast<int>(args.integer(1, 1000000000L, EVERY_USAGE));
     } else if (key == "move") {
-      move_limit = positive_number();
+      move_limit = limit(MOVE_USAGE, 1.0);
     } else if (key == "overlap") {
-      overlap_limit = positive_number();
+      overlap_limit = limit(OVERLAP_USAGE, 1.0);
     } else if (key == "timestep") {
-      time_step_limit = positive_number();
+      time_step_limit = limit(TIMESTEP_USAGE, 2.0);
     } else if (key == "ilimit") {
-      inertial_limit = positive_number();
+      inertial_limit = limit(ILIMIT_USAGE, 1.0);
+      ilimit_text = args.current_value();
     } else if (key == "inertial") {
-      if (iarg + 2 >= narg)
-        error->all(FLERR, msg("inertial needs a strain rate and a pressure (numbers or v_name)").c_str());
-      rate_in.parse(lmp, PREFIX, "the inertial strain rate", arg[iarg + 1]);
-      pressure_in.parse(lmp, PREFIX, "the inertial pressure", arg[iarg + 2]);
+      parse_inertial_value(args, rate_in, false);
+      parse_inertial_value(args, pressure_in, true);
       check_inertial = true;
-      iarg++;
     } else {
-      error->all(FLERR, msg("unknown keyword '" + key +
-                            "' (expected every, move, overlap, timestep, inertial or ilimit)").c_str());
+      args.unknown("every, move, overlap, timestep, inertial, ilimit");
     }
-    iarg += 2;
   }
+  if (!ilimit_text.empty() && !check_inertial)
+    error->all(FLERR, keyword_message(PREFIX, "ilimit", ilimit_text,
+                                      "has no effect without keyword 'inertial'; add inertial R P, "
+                                      "or leave ilimit out").c_str());
 
   vector_flag = 1;
   size_vector = VECTOR_SIZE;
   global_freq = nevery;
   extvector = 0;
   std::fill(values, values + VECTOR_SIZE, 0.0);
+}
+
+/* ----------------------------------------------------------------------
+   one value of 'inertial R P': a number (checked here: R >= 0, P > 0, both
+   finite) or v_name (checked whenever it is evaluated)
+------------------------------------------------------------------------- */
+
+void FixStabilityGuard::parse_inertial_value(StyleArgs &args, ScalarInput &in, bool positive)
+{
+  const std::string text = args.value(INERTIAL_USAGE);
+  if (text.compare(0, 2, "v_") == 0) {
+    if (text.size() == 2) args.bad("names no variable", INERTIAL_USAGE);
+  } else {
+    char *end = nullptr;
+    const double v = strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0') args.bad("is not a number or v_name", INERTIAL_USAGE);
+    if (!std::isfinite(v)) args.bad("must be finite", INERTIAL_USAGE);
+    if (positive && !(v > 0.0)) args.bad("must be a positive number (the pressure P)", INERTIAL_USAGE);
+    if (!positive && !(v >= 0.0)) args.bad("must be a number >= 0 (the strain rate R)", INERTIAL_USAGE);
+  }
+  in.parse(lmp, PREFIX, "inertial", text.c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -124,11 +170,13 @@ int FixStabilityGuard::setmask()
 void FixStabilityGuard::init()
 {
   if (check_inertial) {
-    rate_in.init(lmp, PREFIX, "the inertial strain rate");
-    pressure_in.init(lmp, PREFIX, "the inertial pressure");
+    rate_in.init(lmp, PREFIX, "inertial");
+    pressure_in.init(lmp, PREFIX, "inertial");
   }
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
-  if (grains.empty) error->all(FLERR, msg("the fix group has no atoms").c_str());
+  if (grains.empty)
+    error->all(FLERR, msg(std::string("the fix group '") + group->names[igroup] +
+                          "' has no atoms; use a group with the disks to watch").c_str());
   d50 = grains.d50;
   density = grains.density;
   values[TIME_STEP_RATIO] = check_time_step(lmp, groupbit, world, PREFIX, time_step_limit, warned_dt);
@@ -192,24 +240,37 @@ void FixStabilityGuard::check_atoms()
   const ValueTag fastest = max_over_ranks(local, world);
   values[STEP_FRACTION] = fastest.value;
   if (fastest.value > move_limit) {
-    char buf[512];
+    // a blown-up run moves disks > 5 % of their radius per step (bench/stability_sweep.md);
+    // a stricter 'move' stops slower ones, which need not be unstable
+    const bool blown_up = fastest.value > BLOW_UP_STEP_FRACTION;
+    char buf[768];
     snprintf(buf, sizeof(buf),
              "atom %d moved %.3g of its radius in one step at step " BIGINT_FORMAT
-             " (limit %g; a quasi-static test moves disks < 0.001): the run has gone unstable "
-             "(kinetic energy blow-up); %s", fastest.tag, fastest.value, update->ntimestep,
-             move_limit, unstable_hint().c_str());
+             " (limit %g; a quasi-static test moves disks < 0.001): %s; %s", fastest.tag,
+             fastest.value, update->ntimestep, move_limit,
+             blown_up ? "the run has gone unstable (kinetic energy blow-up)"
+                      : "faster than 'move' allows (unstable runs move disks > 0.05)",
+             unstable_hint().c_str());
     error->all(FLERR, msg(buf).c_str());
   }
 }
 
-// what to change, for the errors of an unstable run (worded only when one is raised)
+// what to change, for the errors of an unstable run (worded only when one is
+// raised): the time step only when it is above the safe 0.15 x sqrt(m_min/k_n)
 std::string FixStabilityGuard::unstable_hint() const
 {
   const double dt_ratio = values[TIME_STEP_RATIO];
-  if (!(dt_ratio > 0.0)) return "reduce the time step, the servo gain or the loading rate";
-  char hint[256];
-  snprintf(hint, sizeof(hint), "reduce the time step (now %.2f x sqrt(m_min/k_n); 0.15 is safe), "
-           "the servo gain or the loading rate", dt_ratio);
+  char hint[320];
+  if (!(dt_ratio > 0.0))
+    snprintf(hint, sizeof(hint), "reduce the servo gain or the loading rate, or the time step if "
+             "it is above %g x sqrt(m_min/k_n) (not checked: no kn peratomtypepair table)",
+             SAFE_TIME_STEP_RATIO);
+  else if (dt_ratio > SAFE_TIME_STEP_RATIO)
+    snprintf(hint, sizeof(hint), "reduce the time step (now %.3g x sqrt(m_min/k_n); %g is safe), "
+             "the servo gain or the loading rate", dt_ratio, SAFE_TIME_STEP_RATIO);
+  else
+    snprintf(hint, sizeof(hint), "the time step is safe (%.3g x sqrt(m_min/k_n), at most %g): "
+             "reduce the servo gain or the loading rate", dt_ratio, SAFE_TIME_STEP_RATIO);
   return hint;
 }
 
@@ -237,7 +298,7 @@ void FixStabilityGuard::check_lost_atoms()
     error->all(FLERR, msg(std::to_string(lost) + " atom(s) of the group were lost since the start of the "
                           "run (at step " + std::to_string(update->ntimestep) + "): disks left the box "
                           "through a wall or the membrane; check that walls and platens enclose the "
-                          "sample and reduce the time step or the loading rate").c_str());
+                          "sample, and " + unstable_hint()).c_str());
 }
 
 /* ----------------------------------------------------------------------
@@ -294,9 +355,19 @@ void FixStabilityGuard::check_overlaps()
 
 void FixStabilityGuard::check_inertial_number()
 {
+  // a variable may turn NaN, infinite, negative (R) or non-positive (P) mid-run
   const double rate = rate_in.evaluate(lmp);
+  if (!(std::isfinite(rate) && rate >= 0.0)) bad_inertial_value(rate_in, rate, ">= 0 (the strain rate R)");
   const double pressure = pressure_in.evaluate(lmp);
+  if (!(std::isfinite(pressure) && pressure > 0.0))
+    bad_inertial_value(pressure_in, pressure, "> 0 (the pressure P)");
   const double inertial = stability::inertial_number(rate, d50, density, pressure);
+  if (!std::isfinite(inertial))
+    error->all(FLERR, keyword_message(PREFIX, "inertial", rate_in.text() + " " + pressure_in.text(),
+                                      "the inertial number overflows at step " +
+                                      std::to_string(update->ntimestep) + " (R = " + value_text(rate) +
+                                      ", P = " + value_text(pressure) + "); the pressure is too "
+                                      "small for the rate").c_str());
   values[INERTIAL] = inertial;
   if (inertial <= inertial_limit || warned_inertial) return;
   warned_inertial = true;
@@ -307,6 +378,16 @@ void FixStabilityGuard::check_inertial_number()
            "lower the loading rate (warned once; f_ID[4] is the current value)",
            inertial, inertial_limit, update->ntimestep, rate, d50, density, pressure);
   warn(buf);
+}
+
+// a variable of 'inertial R P' evaluated to a value it must not have
+void FixStabilityGuard::bad_inertial_value(const ScalarInput &in, double value, const char *must)
+{
+  error->all(FLERR, keyword_message(PREFIX, "inertial", in.text(),
+                                    "is " + value_text(value) + " at step " +
+                                    std::to_string(update->ntimestep) +
+                                    "; it must be a finite number " + must).c_str());
+  std::abort();   // Error::all does not return; tells the compiler so
 }
 
 /* ---------------------------------------------------------------------- */

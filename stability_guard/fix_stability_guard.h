@@ -21,6 +21,7 @@ FixStyle(stability/guard,FixStabilityGuard)
 
 #include "fix.h"
 #include "scalar_input.h"
+#include "style_args.h"
 
 namespace LAMMPS_NS {
 
@@ -51,6 +52,8 @@ class FixStabilityGuard : public Fix {
   double warned_dt = 0.0;   // the time step last warned about
   int warnings;
 
+  void parse_inertial_value(StyleArgs &args, ScalarInput &in, bool positive);
+  [[noreturn]] void bad_inertial_value(const ScalarInput &in, double value, const char *must);
   void check_atoms();
   void check_lost_atoms();
   void check_overlaps();
