@@ -24,6 +24,7 @@
 // %g of a number, for messages
 inline std::string number_text(double v)
 {
+  if (std::isnan(v)) return "nan";   // not "-nan", whatever its sign bit
   char buf[64];
   snprintf(buf, sizeof(buf), "%g", v);
   return buf;
@@ -32,7 +33,7 @@ inline std::string number_text(double v)
 inline std::string keyword_message(const std::string &prefix, const std::string &key,
                                    const std::string &value, const std::string &problem)
 {
-  return prefix + "keyword '" + key + "' = " + value + ": " + problem;
+  return prefix + "keyword '" + key + "' = " + (value.empty() ? "''" : value) + ": " + problem;
 }
 
 class StyleArgs {
