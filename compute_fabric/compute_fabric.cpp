@@ -25,6 +25,7 @@
 #include "variable.h"
 
 #include "allgather.h"
+#include "style_args.h"
 #include "stability_index.h"
 
 using namespace LAMMPS_NS;
@@ -33,8 +34,9 @@ namespace {
 
 constexpr double RAD2DEG = 180.0 / M_PI;
 
-// One contact as exchanged between ranks: tags, centres, force on atom a.
-enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, CONTACT_FIELDS };
+// One contact as exchanged between ranks: tags, centres, force on atom a,
+// radius sum (wall: a's radius).
+enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, RADSUM, CONTACT_FIELDS };
 
 bool is_yes_no(const char *s) { return strcmp(s, "yes") == 0 || strcmp(s, "no") == 0; }
 
@@ -49,7 +51,8 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
   area_value(0.0), area_varname(nullptr), area_ivar(-1),
   idregion(nullptr), iregion(-1),
   walls_flag(false),
-  gathered_step(-1), nparticles(0), nmax_atom(0)
+  gathered_step(-1), nparticles(0), no_normal(0), first_no_normal(0),
+  warned_no_normal(false), nmax_atom(0)
 {
   if (domain->dimension != 2)
     error->all(FLERR, "Compute fabric requires dimension 2");
@@ -285,7 +288,8 @@ void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
       const int ip = atom->map(static_cast<int>(row[oid + 2]));
       if (ip < 0 || !(atom->mask[ip] & groupbit)) continue;
       if (region && !region->match(xp[0], xp[1], xp[2])) continue;
-      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0, xp[0], xp[1], cp[0], cp[1], row[of], row[of + 1]};
+      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0, xp[0], xp[1], cp[0], cp[1],
+                                        row[of], row[of + 1], atom->radius[ip]};
       std::copy(w, w + CONTACT_FIELDS, rec);
     } else {
       const double *xa = row + ox, *xb = row + ox + 3;
@@ -296,7 +300,7 @@ void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
       if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
         continue;
       const double p[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
-                                        row[of], row[of + 1]};
+                                        row[of], row[of + 1], atom->radius[ia] + atom->radius[ib]};
       std::copy(p, p + CONTACT_FIELDS, rec);
       if (rec[TAG_A] > rec[TAG_B]) {
         // make a the smaller tag; the force on the new a is minus the old one
@@ -354,24 +358,19 @@ void ComputeFabric::gather_contacts()
   std::sort(sort_keys.begin(), sort_keys.end());
 
   contact_list.resize(ncontacts);
+  no_normal = 0;
   for (int c = 0; c < ncontacts; c++) {
     const double *rec = buf + sort_keys[c].second * CONTACT_FIELDS;
-    fabric::Contact &k = contact_list[c];
-    k.a = static_cast<long>(rec[TAG_A]);
-    k.b = static_cast<long>(rec[TAG_B]);
     // positions are remapped into the box: undo a periodic wrap
-    double dz = 0.0;
-    k.lx = rec[XB] - rec[XA];
-    k.ly = rec[YB] - rec[YA];
-    domain->minimum_image(k.lx, k.ly, dz);
-    const double len = std::sqrt(k.lx * k.lx + k.ly * k.ly);
-    k.nx = k.lx / len;
-    k.ny = k.ly / len;
+    double lx = rec[XB] - rec[XA], ly = rec[YB] - rec[YA], dz = 0.0;
+    domain->minimum_image(lx, ly, dz);
     // force on b from a is minus the force on a from b
-    const double fbx = -rec[FAX], fby = -rec[FAY];
-    k.fn = fbx * k.nx + fby * k.ny;
-    k.ft = -fbx * k.ny + fby * k.nx;
+    fabric::Contact &k = contact_list[c];
+    k = fabric::make_contact(static_cast<long>(rec[TAG_A]), static_cast<long>(rec[TAG_B]),
+                             lx, ly, -rec[FAX], -rec[FAY], rec[RADSUM]);
+    if (!fabric::has_normal(k) && no_normal++ == 0) first_no_normal = c;
   }
+  if (no_normal > 0) warn_no_normal();
 
   index_contact_ends();
 
@@ -379,6 +378,28 @@ void ComputeFabric::gather_contacts()
   for (int i = 0; i < atom->nlocal; i++)
     if (atom_selected(i)) nlocal_selected++;
   MPI_Allreduce(&nlocal_selected, &nparticles, 1, MPI_LONG, MPI_SUM, world);
+}
+
+/* ----------------------------------------------------------------------
+   contacts with coincident centres (fabric::make_contact): once per compute,
+   by rank 0, from the contact list every rank holds
+------------------------------------------------------------------------- */
+
+void ComputeFabric::warn_no_normal()
+{
+  if (warned_no_normal) return;
+  warned_no_normal = true;
+  if (comm->me != 0) return;
+  const fabric::Contact &k = contact_list[first_no_normal];
+  const std::string pair = k.b >= 0 ? "atoms " + std::to_string(k.a) + " and " + std::to_string(k.b)
+                                    : "atom " + std::to_string(k.a) + " and a mesh wall";
+  const std::string text =
+      "Compute fabric: " + std::to_string(no_normal) + " contact(s) with coincident centres (" +
+      pair + ", distance " + number_text(std::hypot(k.lx, k.ly)) + ") have no normal; left out "
+      "of the fabric and force directions, the stress and the stability index, still counted in "
+      "N_c, C_n and Z_m (c_" + std::string(id) + "[17] is their number); were two atoms created "
+      "at one point? (warned once)";
+  error->warning(FLERR, text.c_str());
 }
 
 /* ----------------------------------------------------------------------
@@ -399,7 +420,8 @@ void ComputeFabric::index_contact_ends()
   end_angle.resize(end_start[maxtag + 1]);
   fill.assign(end_start.begin(), end_start.end() - 1);
   for (const fabric::Contact &k : contact_list) {
-    const double theta = std::atan2(k.ny, k.nx);
+    // a contact without a normal counts for both particles but has no angle
+    const double theta = fabric::has_normal(k) ? std::atan2(k.ny, k.nx) : NAN;
     end_angle[fill[k.a]++] = theta;
     if (k.b >= 0) end_angle[fill[k.b]++] = theta + M_PI;
   }
@@ -491,6 +513,7 @@ void ComputeFabric::compute_vector()
   vector[ZM] = coord.Zm;
   vector[NCONTACT] = static_cast<double>(contact_list.size());
   vector[NPARTICLE] = static_cast<double>(nparticles);
+  vector[NO_NORMAL] = static_cast<double>(no_normal);
 
   if (stability_flag) vector[MEAN_GSI] = mean_stability_index();
 

@@ -37,7 +37,7 @@ class ComputeFabric : public Compute {
   // global vector layout (1-based in input scripts: c_ID[k])
   enum VectorIndex {
     A = 0, THETA_A, A_N, THETA_N, F0, A_T, THETA_T, CN, ZM, NCONTACT,
-    NPARTICLE, EMPTY_BINS, MEAN_GSI, SXX, SYY, SXY, VECTOR_SIZE
+    NPARTICLE, EMPTY_BINS, MEAN_GSI, SXX, SYY, SXY, NO_NORMAL, VECTOR_SIZE
   };
 
  private:
@@ -73,6 +73,9 @@ class ComputeFabric : public Compute {
   std::vector<double> end_angle, angles;
   std::vector<int> recvcounts, displs;
   long nparticles;         // particles in group (and region)
+  long no_normal;          // contacts with coincident centres (no normal)
+  int first_no_normal;     // ... the first of them in contact_list
+  bool warned_no_normal;
 
   int nmax_atom;
 
@@ -85,6 +88,7 @@ class ComputeFabric : public Compute {
   bool atom_selected(int i) const;
   double sample_area();
   std::vector<int> contacts_per_particle() const;
+  void warn_no_normal();
   void index_contact_ends();
   double mean_stability_index();
 };
