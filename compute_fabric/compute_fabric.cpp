@@ -5,10 +5,11 @@
 #include "compute_fabric.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
-#include <cstdint>
 
 #include "atom.h"
 #include "comm.h"
@@ -38,7 +39,35 @@ constexpr double RAD2DEG = 180.0 / M_PI;
 // radius sum (wall: a's radius).
 enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, RADSUM, CONTACT_FIELDS };
 
-bool is_yes_no(const char *s) { return strcmp(s, "yes") == 0 || strcmp(s, "no") == 0; }
+// every message starts so (doc/messages.md, common/style_args.h)
+const char *const PREFIX = "Compute fabric: ";
+const char *const KEYWORDS =
+    "bins, estimator, stability, rattlers, histogram, stress, region, walls";
+const char *const USE_BINS =
+    "bins N, the number of angular bins over 360 deg, an even integer from 6 to 3600 (default 18)";
+const char *const USE_ESTIMATOR = "estimator unbiased, published or tensor (default unbiased)";
+const char *const USE_STABILITY =
+    "stability yes or no, the mean stability index as vector entry 13 (default no)";
+const char *const USE_RATTLERS =
+    "rattlers yes or no, particles with 0 or 1 contact in the mean stability index (default no)";
+const char *const USE_HISTOGRAM =
+    "histogram yes or no, the polar histogram as a global array (default no)";
+const char *const USE_WALLS =
+    "walls yes or no, also count the contacts with the mesh walls of fix wall/gran (default no)";
+const char *const USE_STRESS =
+    "stress A or v_name, the sample area (length^2 per unit thickness) of the Love-Weber stress";
+const char *const USE_REGION =
+    "region ID, count only the particles whose centre is inside region ID (a region defined before compute fabric)";
+
+bool yes_no(StyleArgs &args, const char *usage)
+{
+  const std::string value = args.value(usage);
+  if (value == "yes") return true;
+  if (value != "no") args.bad("must be yes or no", usage);
+  return false;
+}
+
+std::string msg(const std::string &text) { return PREFIX + text; }
 
 }  // namespace
 
@@ -48,18 +77,20 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
   Compute(lammps, iarg, narg, arg),
   nbins(18), estimator(Estimator::Unbiased), stability_flag(false),
   rattlers_flag(false), histogram_flag(false), stress_flag(false),
-  area_value(0.0), area_varname(nullptr), area_ivar(-1),
-  idregion(nullptr), iregion(-1),
+  area_ivar(-1), iregion(-1),
   walls_flag(false),
   gathered_step(-1), nparticles(0), no_normal(0), first_no_normal(0),
   warned_no_normal(false), nmax_atom(0)
 {
+  // (tests/scripts/dimension3_errors.in matches "Compute fabric requires dimension 2")
   if (domain->dimension != 2)
-    error->all(FLERR, "Compute fabric requires dimension 2");
-  if (atom->tag_enable == 0 || atom->map_style == 0)
-    error->all(FLERR, "Compute fabric requires atom IDs and an atom map (atom_modify map array)");
+    error->all(FLERR, "Compute fabric requires dimension 2: it is a 2D compute; set "
+                      "dimension 2 before create_box");
   if (!atom->radius_flag)
-    error->all(FLERR, "Compute fabric requires atom style sphere (granular)");
+    error->all(FLERR, msg("requires per-atom radii; use atom_style granular (or sphere)").c_str());
+  if (atom->tag_enable == 0 || atom->map_style == 0)
+    error->all(FLERR, msg("requires atom IDs and an atom map; add atom_modify map array "
+                          "before create_box").c_str());
 
   // the base class leaves its output pointers uninitialised
   vector = nullptr;
@@ -94,55 +125,52 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
 
 void ComputeFabric::parse_args(int iarg, int narg, char **arg)
 {
-  while (iarg < narg) {
-    const char *key = arg[iarg];
-    if (iarg + 1 >= narg)
-      error->all(FLERR, (std::string("Illegal compute fabric command: keyword '") + key +
-                         "' needs a value").c_str());
-    const char *value = arg[iarg + 1];
-    if (strcmp(key, "bins") == 0) {
-      char *end = nullptr;
-      long n = strtol(value, &end, 10);
-      if (*end != '\0' || n < 6 || n > 3600 || n % 2 != 0)
-        error->all(FLERR, "Illegal compute fabric command: 'bins' must be an even integer from 6 to 3600");
+  StyleArgs args(lmp, PREFIX, narg, arg, iarg);
+  while (args.more()) {
+    const std::string key = args.keyword();
+    if (key == "bins") {
+      const long n = args.integer(LONG_MIN, LONG_MAX, USE_BINS);
+      if (n < 6 || n > 3600 || n % 2 != 0) args.bad("must be an even integer from 6 to 3600", USE_BINS);
       nbins = static_cast<int>(n);
-    } else if (strcmp(key, "estimator") == 0) {
-      if (strcmp(value, "unbiased") == 0) estimator = Estimator::Unbiased;
-      else if (strcmp(value, "published") == 0) estimator = Estimator::Published;
-      else if (strcmp(value, "tensor") == 0) estimator = Estimator::Tensor;
-      else error->all(FLERR, "Illegal compute fabric command: 'estimator' must be unbiased, published or tensor");
-    } else if (strcmp(key, "stability") == 0 || strcmp(key, "rattlers") == 0 ||
-               strcmp(key, "histogram") == 0 || strcmp(key, "walls") == 0) {
-      if (!is_yes_no(value))
-        error->all(FLERR, (std::string("Illegal compute fabric command: '") + key +
-                           "' must be yes or no").c_str());
-      const bool on = strcmp(value, "yes") == 0;
-      if (key[0] == 's') stability_flag = on;
-      else if (key[0] == 'r') rattlers_flag = on;
-      else if (key[0] == 'w') walls_flag = on;
-      else histogram_flag = on;
-    } else if (strcmp(key, "stress") == 0) {
-      stress_flag = true;
+    } else if (key == "estimator") {
+      const std::string value = args.value(USE_ESTIMATOR);
+      if (value == "unbiased") estimator = Estimator::Unbiased;
+      else if (value == "published") estimator = Estimator::Published;
+      else if (value == "tensor") estimator = Estimator::Tensor;
+      else args.bad("must be unbiased, published or tensor", USE_ESTIMATOR);
+    } else if (key == "stability") {
+      stability_flag = yes_no(args, USE_STABILITY);
+    } else if (key == "rattlers") {
+      rattlers_flag = yes_no(args, USE_RATTLERS);
+    } else if (key == "histogram") {
+      histogram_flag = yes_no(args, USE_HISTOGRAM);
+    } else if (key == "walls") {
+      walls_flag = yes_no(args, USE_WALLS);
+    } else if (key == "stress") {
+      const char *value = args.value(USE_STRESS);
       if (strncmp(value, "v_", 2) == 0) {
-        area_varname = new char[strlen(value + 2) + 1];
-        strcpy(area_varname, value + 2);
+        if (value[2] == '\0') args.bad("names no variable", USE_STRESS);
       } else {
         char *end = nullptr;
-        area_value = strtod(value, &end);
-        if (*end != '\0' || !(area_value > 0.0) || !std::isfinite(area_value))
-          error->all(FLERR, "Illegal compute fabric command: 'stress' needs a positive area or v_name");
+        const double area = strtod(value, &end);
+        if (*value == '\0' || *end != '\0') args.bad("is neither a number nor v_name", USE_STRESS);
+        if (!(std::isfinite(area) && area > 0.0))
+          args.bad("must be a positive number (the sample area)", USE_STRESS);
       }
-    } else if (strcmp(key, "region") == 0) {
-      if (domain->find_region(value) < 0)
-        error->all(FLERR, (std::string("Compute fabric: region '") + value + "' does not exist").c_str());
-      idregion = new char[strlen(value) + 1];
-      strcpy(idregion, value);
+      area_in.parse(lmp, PREFIX, "stress", value);
+      stress_flag = true;
+    } else if (key == "region") {
+      idregion = args.value(USE_REGION);
+      if (domain->find_region(const_cast<char *>(idregion.c_str())) < 0)
+        args.bad("there is no region " + idregion, USE_REGION);
     } else {
-      error->all(FLERR, (std::string("Illegal compute fabric command: unknown keyword '") +
-                         key + "'").c_str());
+      args.unknown(KEYWORDS);
     }
-    iarg += 2;
   }
+  if (rattlers_flag && !stability_flag && comm->me == 0)
+    error->warning(FLERR, keyword_message(PREFIX, "rattlers", "yes",
+                                          "has no effect without stability yes (it only changes the "
+                                          "mean stability index, vector entry 13); add stability yes").c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -152,8 +180,6 @@ ComputeFabric::~ComputeFabric()
   memory->destroy(vector);
   memory->destroy(array);
   memory->destroy(array_atom);
-  delete[] area_varname;
-  delete[] idregion;
   delete[] pairs.id;
   delete[] walls.id;
 }
@@ -234,24 +260,24 @@ void ComputeFabric::init()
     // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
     // wall is recognised by the mesh fixes it needs)
     if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
-      error->all(FLERR, "Compute fabric: 'walls yes' needs a fix wall/gran with mesh walls "
-                        "(LIGGGHTS reports no contact forces for primitive walls)");
+      error->all(FLERR, keyword_message(PREFIX, "walls", "yes",
+                                        "needs a fix wall/gran with mesh walls (LIGGGHTS reports no "
+                                        "contact forces for primitive walls); use mesh walls (fix "
+                                        "mesh/surface and fix wall/gran ... mesh) or walls no").c_str());
     init_source(walls, "_walls");
   }
 
-  if (idregion) {
-    iregion = domain->find_region(idregion);
+  if (!idregion.empty()) {
+    iregion = domain->find_region(const_cast<char *>(idregion.c_str()));
     if (iregion < 0)
-      error->all(FLERR, (std::string("Compute fabric: region '") + idregion + "' does not exist").c_str());
+      error->all(FLERR, keyword_message(PREFIX, "region", idregion,
+                                        "region " + idregion + " was deleted; define it again "
+                                        "before the run, or use a compute fabric without region").c_str());
   }
-  if (area_varname) {
-    area_ivar = input->variable->find(area_varname);
-    if (area_ivar < 0)
-      error->all(FLERR, (std::string("Compute fabric: variable '") + area_varname +
-                         "' for the stress area does not exist").c_str());
-    if (!input->variable->equalstyle(area_ivar))
-      error->all(FLERR, (std::string("Compute fabric: variable '") + area_varname +
-                         "' for the stress area must be equal-style").c_str());
+  if (stress_flag) {
+    area_in.init(lmp, PREFIX, "stress");   // the variable exists and is equal-style
+    if (area_in.is_variable())
+      area_ivar = input->variable->find(const_cast<char *>(area_in.text().substr(2).c_str()));
   }
   gathered_step = -1;
 }
@@ -444,12 +470,21 @@ std::vector<int> ComputeFabric::contacts_per_particle() const
 
 /* ---------------------------------------------------------------------- */
 
+// A variable is checked whenever it is evaluated (the same on every rank).
+// It is evaluated here directly, not with ScalarInput::evaluate: that one
+// clears the invoked flags of all computes (modify->clearstep_compute), which
+// inside an output (thermo, fix ave/time) that invokes this compute makes the
+// output skip scheduling the computes it already invoked, e.g. a per-atom
+// virial for compute stress/atom at its next step.
 double ComputeFabric::sample_area()
 {
-  if (!area_varname) return area_value;
-  const double area = input->variable->compute_equal(area_ivar);
-  if (!(area > 0.0) || !std::isfinite(area))
-    error->all(FLERR, "Compute fabric: the stress area variable is not a positive number");
+  const double area = area_in.is_variable() ? input->variable->compute_equal(area_ivar)
+                                            : area_in.evaluate(lmp);
+  if (!(std::isfinite(area) && area > 0.0))
+    error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
+                                      "is " + number_text(area) + " at step " +
+                                      std::to_string(update->ntimestep) +
+                                      "; it must be a positive number (the sample area)").c_str());
   return area;
 }
 

@@ -16,11 +16,13 @@ ComputeStyle(fabric,ComputeFabric)
 #define LMP_COMPUTE_FABRIC_H
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "compute.h"
 #include "fabric_statistics.h"
+#include "scalar_input.h"
 
 namespace LAMMPS_NS {
 
@@ -49,10 +51,9 @@ class ComputeFabric : public Compute {
   bool rattlers_flag;      // include particles with < 2 contacts in the mean GSI
   bool histogram_flag;     // polar histograms as global array
   bool stress_flag;
-  double area_value;       // Love-Weber area when given as a number
-  char *area_varname;      // ... or as an equal-style variable
-  int area_ivar;
-  char *idregion;
+  ScalarInput area_in;     // Love-Weber area: a number or v_name
+  int area_ivar;           // ... the variable, found at init
+  std::string idregion;    // empty: no region
   int iregion;
 
   // LIGGGHTS' computes that report contact forces: pair/gran/local for
