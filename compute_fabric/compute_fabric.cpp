@@ -188,9 +188,11 @@ ComputeFabric::~ComputeFabric()
    Contact forces come from LIGGGHTS' own compute pair/gran/local: the pair
    style evaluates its contact model again at the current positions with the
    stored contact history (not updated), so these are the forces the pair
-   applied this step. A pair style accepts only one such compute: reuse one
-   the user defined (before or after this compute), else create ours at the
-   first init, when every compute of the input script exists.
+   applied this step. A pair style accepts only one such compute, so every
+   compute fabric reads the same one: one the user defined (before or after
+   this compute), else ours, created at the first init (when every compute
+   of the input script exists) in group all, because pack_contacts keeps
+   only the contacts of this compute's group anyway.
 ------------------------------------------------------------------------- */
 
 void ComputeFabric::find_source(ContactSource &src)
@@ -200,13 +202,19 @@ void ComputeFabric::find_source(ContactSource &src)
     Compute *c = modify->compute[i];
     if (c == this || strcmp(c->style, src.style) != 0) continue;
     if (src.id && strcmp(c->id, src.id) != 0) continue;
+    const std::string named = std::string("compute ") + c->id + " (" + src.style + ", group " +
+                              group->names[c->igroup] + ")";
     ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
     if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id + " (" + src.style +
-                         ") must include the values 'pos id force' for compute fabric to read it").c_str());
+      error->all(FLERR, msg(named + " lacks the values pos, id or force that compute " + id +
+                            " (fabric) reads from it; define it as compute " + c->id + " " +
+                            group->names[c->igroup] + " " + src.style + " pos id force").c_str());
     if (c->igroup != 0 && c->igroup != igroup)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id + " (" + src.style +
-                         ") must use group all or the group of compute fabric").c_str());
+      error->all(FLERR, msg("compute " + std::string(id) + " (fabric, group " + group->names[igroup] +
+                            ") reads the contacts from " + named + ", which leaves out the contacts "
+                            "outside group " + group->names[c->igroup] + "; define compute " + c->id +
+                            " in group all: a pair style takes one compute " + src.style +
+                            " and every compute fabric reads it").c_str());
     src.compute = found;
     if (!src.id) {
       src.id = new char[strlen(c->id) + 1];
@@ -225,7 +233,7 @@ void ComputeFabric::create_source(ContactSource &src, const char *suffix)
 
   char *args[6];
   args[0] = src.id;
-  args[1] = group->names[igroup];
+  args[1] = (char *) "all";
   args[2] = const_cast<char *>(src.style);
   args[3] = (char *) "pos";
   args[4] = (char *) "id";
@@ -245,9 +253,12 @@ void ComputeFabric::create_source(ContactSource &src, const char *suffix)
 void ComputeFabric::init_source(ContactSource &src, const char *suffix)
 {
   find_source(src);
-  if (!src.compute && src.id)
-    error->all(FLERR, (std::string("Compute fabric: compute ") + src.id + " (" + src.style +
-                       ") that it reads was deleted").c_str());
+  if (!src.compute && src.id) {
+    // deleted (uncompute) since the last run: read another one, or ours
+    delete[] src.id;
+    src.id = nullptr;
+    find_source(src);
+  }
   if (!src.compute) create_source(src, suffix);
 }
 
