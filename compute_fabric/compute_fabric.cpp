@@ -56,6 +56,8 @@ const char *const USE_WALLS =
     "walls yes or no, also count the contacts with the mesh walls of fix wall/gran (default no)";
 const char *const USE_STRESS =
     "stress A or v_name, the sample area (length^2 per unit thickness) of the Love-Weber stress";
+const char *const USE_UPDATE =
+    "update_on_run_end yes or no, invoke the compute at the end of each run (default no)";
 const char *const USE_REGION =
     "region ID, count only the particles whose centre is inside region ID (a region defined before compute fabric)";
 
@@ -163,6 +165,11 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
       idregion = args.value(USE_REGION);
       if (domain->find_region(const_cast<char *>(idregion.c_str())) < 0)
         args.bad("there is no region " + idregion, USE_REGION);
+    } else if (key == "update_on_run_end") {
+      // LIGGGHTS' Compute reads it for every compute, only right after the style
+      args.value(USE_UPDATE);
+      args.bad("must come first, right after fabric (LIGGGHTS reads it there for every compute)",
+               USE_UPDATE);
     } else {
       args.unknown(KEYWORDS);
     }
