@@ -437,12 +437,12 @@ void ComputeFabric::warn_no_normal()
   const fabric::Contact &k = contact_list[first_no_normal];
   const std::string pair = k.b >= 0 ? "atoms " + std::to_string(k.a) + " and " + std::to_string(k.b)
                                     : "atom " + std::to_string(k.a) + " and a mesh wall";
-  const std::string text =
-      "Compute fabric: " + std::to_string(no_normal) + " contact(s) with coincident centres (" +
+  const std::string text = msg(
+      std::to_string(no_normal) + " contact(s) with coincident centres (" +
       pair + ", distance " + number_text(std::hypot(k.lx, k.ly)) + ") have no normal; left out "
       "of the fabric and force directions, the stress and the stability index, still counted in "
       "N_c, C_n and Z_m (c_" + std::string(id) + "[17] is their number); were two atoms created "
-      "at one point? (warned once)";
+      "at one point? (warned once)");
   error->warning(FLERR, text.c_str());
 }
 
