@@ -5,10 +5,11 @@
 #include "compute_fabric.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
-#include <cstdint>
 
 #include "atom.h"
 #include "comm.h"
@@ -25,6 +26,7 @@
 #include "variable.h"
 
 #include "allgather.h"
+#include "style_args.h"
 #include "stability_index.h"
 
 using namespace LAMMPS_NS;
@@ -33,10 +35,41 @@ namespace {
 
 constexpr double RAD2DEG = 180.0 / M_PI;
 
-// One contact as exchanged between ranks: tags, centres, force on atom a.
-enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, CONTACT_FIELDS };
+// One contact as exchanged between ranks: tags, centres, force on atom a,
+// radius sum (wall: a's radius).
+enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, RADSUM, CONTACT_FIELDS };
 
-bool is_yes_no(const char *s) { return strcmp(s, "yes") == 0 || strcmp(s, "no") == 0; }
+// every message starts so (doc/messages.md, common/style_args.h)
+const char *const PREFIX = "Compute fabric: ";
+const char *const KEYWORDS =
+    "bins, estimator, stability, rattlers, histogram, stress, region, walls";
+const char *const USE_BINS =
+    "bins N, the number of angular bins over 360 deg, an even integer from 6 to 3600 (default 18)";
+const char *const USE_ESTIMATOR = "estimator unbiased, published or tensor (default unbiased)";
+const char *const USE_STABILITY =
+    "stability yes or no, the mean stability index as vector entry 13 (default no)";
+const char *const USE_RATTLERS =
+    "rattlers yes or no, particles with 0 or 1 contact in the mean stability index (default no)";
+const char *const USE_HISTOGRAM =
+    "histogram yes or no, the polar histogram as a global array (default no)";
+const char *const USE_WALLS =
+    "walls yes or no, also count the contacts with the mesh walls of fix wall/gran (default no)";
+const char *const USE_STRESS =
+    "stress A or v_name, the sample area (length^2 per unit thickness) of the Love-Weber stress";
+const char *const USE_UPDATE =
+    "update_on_run_end yes or no, invoke the compute at the end of each run (default no)";
+const char *const USE_REGION =
+    "region ID, count only the particles whose centre is inside region ID (a region defined before compute fabric)";
+
+bool yes_no(StyleArgs &args, const char *usage)
+{
+  const std::string value = args.value(usage);
+  if (value == "yes") return true;
+  if (value != "no") args.bad("must be yes or no", usage);
+  return false;
+}
+
+std::string msg(const std::string &text) { return PREFIX + text; }
 
 }  // namespace
 
@@ -46,17 +79,20 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
   Compute(lammps, iarg, narg, arg),
   nbins(18), estimator(Estimator::Unbiased), stability_flag(false),
   rattlers_flag(false), histogram_flag(false), stress_flag(false),
-  area_value(0.0), area_varname(nullptr), area_ivar(-1),
-  idregion(nullptr), iregion(-1),
+  area_ivar(-1), iregion(-1),
   walls_flag(false),
-  gathered_step(-1), nparticles(0), nmax_atom(0)
+  gathered_step(-1), nparticles(0), no_normal(0), first_no_normal(0),
+  warned_no_normal(false), nmax_atom(0)
 {
+  // (tests/scripts/dimension3_errors.in matches "Compute fabric requires dimension 2")
   if (domain->dimension != 2)
-    error->all(FLERR, "Compute fabric requires dimension 2");
-  if (atom->tag_enable == 0 || atom->map_style == 0)
-    error->all(FLERR, "Compute fabric requires atom IDs and an atom map (atom_modify map array)");
+    error->all(FLERR, "Compute fabric requires dimension 2: it is a 2D compute; set "
+                      "dimension 2 before create_box");
   if (!atom->radius_flag)
-    error->all(FLERR, "Compute fabric requires atom style sphere (granular)");
+    error->all(FLERR, msg("requires per-atom radii; use atom_style granular (or sphere)").c_str());
+  if (atom->tag_enable == 0 || atom->map_style == 0)
+    error->all(FLERR, msg("requires atom IDs and an atom map; add atom_modify map array "
+                          "before create_box").c_str());
 
   // the base class leaves its output pointers uninitialised
   vector = nullptr;
@@ -91,55 +127,57 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
 
 void ComputeFabric::parse_args(int iarg, int narg, char **arg)
 {
-  while (iarg < narg) {
-    const char *key = arg[iarg];
-    if (iarg + 1 >= narg)
-      error->all(FLERR, (std::string("Illegal compute fabric command: keyword '") + key +
-                         "' needs a value").c_str());
-    const char *value = arg[iarg + 1];
-    if (strcmp(key, "bins") == 0) {
-      char *end = nullptr;
-      long n = strtol(value, &end, 10);
-      if (*end != '\0' || n < 6 || n > 3600 || n % 2 != 0)
-        error->all(FLERR, "Illegal compute fabric command: 'bins' must be an even integer from 6 to 3600");
+  StyleArgs args(lmp, PREFIX, narg, arg, iarg);
+  while (args.more()) {
+    const std::string key = args.keyword();
+    if (key == "bins") {
+      const long n = args.integer(LONG_MIN, LONG_MAX, USE_BINS);
+      if (n < 6 || n > 3600 || n % 2 != 0) args.bad("must be an even integer from 6 to 3600", USE_BINS);
       nbins = static_cast<int>(n);
-    } else if (strcmp(key, "estimator") == 0) {
-      if (strcmp(value, "unbiased") == 0) estimator = Estimator::Unbiased;
-      else if (strcmp(value, "published") == 0) estimator = Estimator::Published;
-      else if (strcmp(value, "tensor") == 0) estimator = Estimator::Tensor;
-      else error->all(FLERR, "Illegal compute fabric command: 'estimator' must be unbiased, published or tensor");
-    } else if (strcmp(key, "stability") == 0 || strcmp(key, "rattlers") == 0 ||
-               strcmp(key, "histogram") == 0 || strcmp(key, "walls") == 0) {
-      if (!is_yes_no(value))
-        error->all(FLERR, (std::string("Illegal compute fabric command: '") + key +
-                           "' must be yes or no").c_str());
-      const bool on = strcmp(value, "yes") == 0;
-      if (key[0] == 's') stability_flag = on;
-      else if (key[0] == 'r') rattlers_flag = on;
-      else if (key[0] == 'w') walls_flag = on;
-      else histogram_flag = on;
-    } else if (strcmp(key, "stress") == 0) {
-      stress_flag = true;
+    } else if (key == "estimator") {
+      const std::string value = args.value(USE_ESTIMATOR);
+      if (value == "unbiased") estimator = Estimator::Unbiased;
+      else if (value == "published") estimator = Estimator::Published;
+      else if (value == "tensor") estimator = Estimator::Tensor;
+      else args.bad("must be unbiased, published or tensor", USE_ESTIMATOR);
+    } else if (key == "stability") {
+      stability_flag = yes_no(args, USE_STABILITY);
+    } else if (key == "rattlers") {
+      rattlers_flag = yes_no(args, USE_RATTLERS);
+    } else if (key == "histogram") {
+      histogram_flag = yes_no(args, USE_HISTOGRAM);
+    } else if (key == "walls") {
+      walls_flag = yes_no(args, USE_WALLS);
+    } else if (key == "stress") {
+      const char *value = args.value(USE_STRESS);
       if (strncmp(value, "v_", 2) == 0) {
-        area_varname = new char[strlen(value + 2) + 1];
-        strcpy(area_varname, value + 2);
+        if (value[2] == '\0') args.bad("names no variable", USE_STRESS);
       } else {
         char *end = nullptr;
-        area_value = strtod(value, &end);
-        if (*end != '\0' || !(area_value > 0.0) || !std::isfinite(area_value))
-          error->all(FLERR, "Illegal compute fabric command: 'stress' needs a positive area or v_name");
+        const double area = strtod(value, &end);
+        if (*value == '\0' || *end != '\0') args.bad("is neither a number nor v_name", USE_STRESS);
+        if (!(std::isfinite(area) && area > 0.0))
+          args.bad("must be a positive number (the sample area)", USE_STRESS);
       }
-    } else if (strcmp(key, "region") == 0) {
-      if (domain->find_region(value) < 0)
-        error->all(FLERR, (std::string("Compute fabric: region '") + value + "' does not exist").c_str());
-      idregion = new char[strlen(value) + 1];
-      strcpy(idregion, value);
+      area_in.parse(lmp, PREFIX, "stress", value);
+      stress_flag = true;
+    } else if (key == "region") {
+      idregion = args.value(USE_REGION);
+      if (domain->find_region(const_cast<char *>(idregion.c_str())) < 0)
+        args.bad("there is no region " + idregion, USE_REGION);
+    } else if (key == "update_on_run_end") {
+      // LIGGGHTS' Compute reads it for every compute, only right after the style
+      args.value(USE_UPDATE);
+      args.bad("must come first, right after fabric (LIGGGHTS reads it there for every compute)",
+               USE_UPDATE);
     } else {
-      error->all(FLERR, (std::string("Illegal compute fabric command: unknown keyword '") +
-                         key + "'").c_str());
+      args.unknown(KEYWORDS);
     }
-    iarg += 2;
   }
+  if (rattlers_flag && !stability_flag && comm->me == 0)
+    error->warning(FLERR, keyword_message(PREFIX, "rattlers", "yes",
+                                          "has no effect without stability yes (it only changes the "
+                                          "mean stability index, vector entry 13); add stability yes").c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -149,8 +187,6 @@ ComputeFabric::~ComputeFabric()
   memory->destroy(vector);
   memory->destroy(array);
   memory->destroy(array_atom);
-  delete[] area_varname;
-  delete[] idregion;
   delete[] pairs.id;
   delete[] walls.id;
 }
@@ -159,9 +195,11 @@ ComputeFabric::~ComputeFabric()
    Contact forces come from LIGGGHTS' own compute pair/gran/local: the pair
    style evaluates its contact model again at the current positions with the
    stored contact history (not updated), so these are the forces the pair
-   applied this step. A pair style accepts only one such compute: reuse one
-   the user defined (before or after this compute), else create ours at the
-   first init, when every compute of the input script exists.
+   applied this step. A pair style accepts only one such compute, so every
+   compute fabric reads the same one: one the user defined (before or after
+   this compute), else ours, created at the first init (when every compute
+   of the input script exists) in group all, because pack_contacts keeps
+   only the contacts of this compute's group anyway.
 ------------------------------------------------------------------------- */
 
 void ComputeFabric::find_source(ContactSource &src)
@@ -171,13 +209,19 @@ void ComputeFabric::find_source(ContactSource &src)
     Compute *c = modify->compute[i];
     if (c == this || strcmp(c->style, src.style) != 0) continue;
     if (src.id && strcmp(c->id, src.id) != 0) continue;
+    const std::string named = std::string("compute ") + c->id + " (" + src.style + ", group " +
+                              group->names[c->igroup] + ")";
     ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
     if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id + " (" + src.style +
-                         ") must include the values 'pos id force' for compute fabric to read it").c_str());
+      error->all(FLERR, msg(named + " lacks the values pos, id or force that compute " + id +
+                            " (fabric) reads from it; define it as compute " + c->id + " " +
+                            group->names[c->igroup] + " " + src.style + " pos id force").c_str());
     if (c->igroup != 0 && c->igroup != igroup)
-      error->all(FLERR, (std::string("Compute fabric: compute ") + c->id + " (" + src.style +
-                         ") must use group all or the group of compute fabric").c_str());
+      error->all(FLERR, msg("compute " + std::string(id) + " (fabric, group " + group->names[igroup] +
+                            ") reads the contacts from " + named + ", which leaves out the contacts "
+                            "outside group " + group->names[c->igroup] + "; define compute " + c->id +
+                            " in group all: a pair style takes one compute " + src.style +
+                            " and every compute fabric reads it").c_str());
     src.compute = found;
     if (!src.id) {
       src.id = new char[strlen(c->id) + 1];
@@ -196,7 +240,7 @@ void ComputeFabric::create_source(ContactSource &src, const char *suffix)
 
   char *args[6];
   args[0] = src.id;
-  args[1] = group->names[igroup];
+  args[1] = (char *) "all";
   args[2] = const_cast<char *>(src.style);
   args[3] = (char *) "pos";
   args[4] = (char *) "id";
@@ -216,9 +260,12 @@ void ComputeFabric::create_source(ContactSource &src, const char *suffix)
 void ComputeFabric::init_source(ContactSource &src, const char *suffix)
 {
   find_source(src);
-  if (!src.compute && src.id)
-    error->all(FLERR, (std::string("Compute fabric: compute ") + src.id + " (" + src.style +
-                       ") that it reads was deleted").c_str());
+  if (!src.compute && src.id) {
+    // deleted (uncompute) since the last run: read another one, or ours
+    delete[] src.id;
+    src.id = nullptr;
+    find_source(src);
+  }
   if (!src.compute) create_source(src, suffix);
 }
 
@@ -231,24 +278,24 @@ void ComputeFabric::init()
     // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
     // wall is recognised by the mesh fixes it needs)
     if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
-      error->all(FLERR, "Compute fabric: 'walls yes' needs a fix wall/gran with mesh walls "
-                        "(LIGGGHTS reports no contact forces for primitive walls)");
+      error->all(FLERR, keyword_message(PREFIX, "walls", "yes",
+                                        "needs a fix wall/gran with mesh walls (LIGGGHTS reports no "
+                                        "contact forces for primitive walls); use mesh walls (fix "
+                                        "mesh/surface and fix wall/gran ... mesh) or walls no").c_str());
     init_source(walls, "_walls");
   }
 
-  if (idregion) {
-    iregion = domain->find_region(idregion);
+  if (!idregion.empty()) {
+    iregion = domain->find_region(const_cast<char *>(idregion.c_str()));
     if (iregion < 0)
-      error->all(FLERR, (std::string("Compute fabric: region '") + idregion + "' does not exist").c_str());
+      error->all(FLERR, keyword_message(PREFIX, "region", idregion,
+                                        "region " + idregion + " was deleted; define it again "
+                                        "before the run, or use a compute fabric without region").c_str());
   }
-  if (area_varname) {
-    area_ivar = input->variable->find(area_varname);
-    if (area_ivar < 0)
-      error->all(FLERR, (std::string("Compute fabric: variable '") + area_varname +
-                         "' for the stress area does not exist").c_str());
-    if (!input->variable->equalstyle(area_ivar))
-      error->all(FLERR, (std::string("Compute fabric: variable '") + area_varname +
-                         "' for the stress area must be equal-style").c_str());
+  if (stress_flag) {
+    area_in.init(lmp, PREFIX, "stress");   // the variable exists and is equal-style
+    if (area_in.is_variable())
+      area_ivar = input->variable->find(const_cast<char *>(area_in.text().substr(2).c_str()));
   }
   gathered_step = -1;
 }
@@ -285,7 +332,8 @@ void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
       const int ip = atom->map(static_cast<int>(row[oid + 2]));
       if (ip < 0 || !(atom->mask[ip] & groupbit)) continue;
       if (region && !region->match(xp[0], xp[1], xp[2])) continue;
-      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0, xp[0], xp[1], cp[0], cp[1], row[of], row[of + 1]};
+      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0, xp[0], xp[1], cp[0], cp[1],
+                                        row[of], row[of + 1], atom->radius[ip]};
       std::copy(w, w + CONTACT_FIELDS, rec);
     } else {
       const double *xa = row + ox, *xb = row + ox + 3;
@@ -296,7 +344,7 @@ void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
       if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
         continue;
       const double p[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
-                                        row[of], row[of + 1]};
+                                        row[of], row[of + 1], atom->radius[ia] + atom->radius[ib]};
       std::copy(p, p + CONTACT_FIELDS, rec);
       if (rec[TAG_A] > rec[TAG_B]) {
         // make a the smaller tag; the force on the new a is minus the old one
@@ -354,24 +402,19 @@ void ComputeFabric::gather_contacts()
   std::sort(sort_keys.begin(), sort_keys.end());
 
   contact_list.resize(ncontacts);
+  no_normal = 0;
   for (int c = 0; c < ncontacts; c++) {
     const double *rec = buf + sort_keys[c].second * CONTACT_FIELDS;
-    fabric::Contact &k = contact_list[c];
-    k.a = static_cast<long>(rec[TAG_A]);
-    k.b = static_cast<long>(rec[TAG_B]);
     // positions are remapped into the box: undo a periodic wrap
-    double dz = 0.0;
-    k.lx = rec[XB] - rec[XA];
-    k.ly = rec[YB] - rec[YA];
-    domain->minimum_image(k.lx, k.ly, dz);
-    const double len = std::sqrt(k.lx * k.lx + k.ly * k.ly);
-    k.nx = k.lx / len;
-    k.ny = k.ly / len;
+    double lx = rec[XB] - rec[XA], ly = rec[YB] - rec[YA], dz = 0.0;
+    domain->minimum_image(lx, ly, dz);
     // force on b from a is minus the force on a from b
-    const double fbx = -rec[FAX], fby = -rec[FAY];
-    k.fn = fbx * k.nx + fby * k.ny;
-    k.ft = -fbx * k.ny + fby * k.nx;
+    fabric::Contact &k = contact_list[c];
+    k = fabric::make_contact(static_cast<long>(rec[TAG_A]), static_cast<long>(rec[TAG_B]),
+                             lx, ly, -rec[FAX], -rec[FAY], rec[RADSUM]);
+    if (!fabric::has_normal(k) && no_normal++ == 0) first_no_normal = c;
   }
+  if (no_normal > 0) warn_no_normal();
 
   index_contact_ends();
 
@@ -379,6 +422,28 @@ void ComputeFabric::gather_contacts()
   for (int i = 0; i < atom->nlocal; i++)
     if (atom_selected(i)) nlocal_selected++;
   MPI_Allreduce(&nlocal_selected, &nparticles, 1, MPI_LONG, MPI_SUM, world);
+}
+
+/* ----------------------------------------------------------------------
+   contacts with coincident centres (fabric::make_contact): once per compute,
+   by rank 0, from the contact list every rank holds
+------------------------------------------------------------------------- */
+
+void ComputeFabric::warn_no_normal()
+{
+  if (warned_no_normal) return;
+  warned_no_normal = true;
+  if (comm->me != 0) return;
+  const fabric::Contact &k = contact_list[first_no_normal];
+  const std::string pair = k.b >= 0 ? "atoms " + std::to_string(k.a) + " and " + std::to_string(k.b)
+                                    : "atom " + std::to_string(k.a) + " and a mesh wall";
+  const std::string text = msg(
+      std::to_string(no_normal) + " contact(s) with coincident centres (" +
+      pair + ", distance " + number_text(std::hypot(k.lx, k.ly)) + ") have no normal; left out "
+      "of the fabric and force directions, the stress and the stability index, still counted in "
+      "N_c, C_n and Z_m (c_" + std::string(id) + "[17] is their number); were two atoms created "
+      "at one point? (warned once)");
+  error->warning(FLERR, text.c_str());
 }
 
 /* ----------------------------------------------------------------------
@@ -399,7 +464,8 @@ void ComputeFabric::index_contact_ends()
   end_angle.resize(end_start[maxtag + 1]);
   fill.assign(end_start.begin(), end_start.end() - 1);
   for (const fabric::Contact &k : contact_list) {
-    const double theta = std::atan2(k.ny, k.nx);
+    // a contact without a normal counts for both particles but has no angle
+    const double theta = fabric::has_normal(k) ? std::atan2(k.ny, k.nx) : NAN;
     end_angle[fill[k.a]++] = theta;
     if (k.b >= 0) end_angle[fill[k.b]++] = theta + M_PI;
   }
@@ -422,12 +488,21 @@ std::vector<int> ComputeFabric::contacts_per_particle() const
 
 /* ---------------------------------------------------------------------- */
 
+// A variable is checked whenever it is evaluated (the same on every rank).
+// It is evaluated here directly, not with ScalarInput::evaluate: that one
+// clears the invoked flags of all computes (modify->clearstep_compute), which
+// inside an output (thermo, fix ave/time) that invokes this compute makes the
+// output skip scheduling the computes it already invoked, e.g. a per-atom
+// virial for compute stress/atom at its next step.
 double ComputeFabric::sample_area()
 {
-  if (!area_varname) return area_value;
-  const double area = input->variable->compute_equal(area_ivar);
-  if (!(area > 0.0) || !std::isfinite(area))
-    error->all(FLERR, "Compute fabric: the stress area variable is not a positive number");
+  const double area = area_in.is_variable() ? input->variable->compute_equal(area_ivar)
+                                            : area_in.evaluate(lmp);
+  if (!(std::isfinite(area) && area > 0.0))
+    error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
+                                      "is " + number_text(area) + " at step " +
+                                      std::to_string(update->ntimestep) +
+                                      "; it must be a positive number (the sample area)").c_str());
   return area;
 }
 
@@ -491,6 +566,7 @@ void ComputeFabric::compute_vector()
   vector[ZM] = coord.Zm;
   vector[NCONTACT] = static_cast<double>(contact_list.size());
   vector[NPARTICLE] = static_cast<double>(nparticles);
+  vector[NO_NORMAL] = static_cast<double>(no_normal);
 
   if (stability_flag) vector[MEAN_GSI] = mean_stability_index();
 

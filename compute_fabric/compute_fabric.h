@@ -16,11 +16,13 @@ ComputeStyle(fabric,ComputeFabric)
 #define LMP_COMPUTE_FABRIC_H
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "compute.h"
 #include "fabric_statistics.h"
+#include "scalar_input.h"
 
 namespace LAMMPS_NS {
 
@@ -37,7 +39,7 @@ class ComputeFabric : public Compute {
   // global vector layout (1-based in input scripts: c_ID[k])
   enum VectorIndex {
     A = 0, THETA_A, A_N, THETA_N, F0, A_T, THETA_T, CN, ZM, NCONTACT,
-    NPARTICLE, EMPTY_BINS, MEAN_GSI, SXX, SYY, SXY, VECTOR_SIZE
+    NPARTICLE, EMPTY_BINS, MEAN_GSI, SXX, SYY, SXY, NO_NORMAL, VECTOR_SIZE
   };
 
  private:
@@ -49,10 +51,9 @@ class ComputeFabric : public Compute {
   bool rattlers_flag;      // include particles with < 2 contacts in the mean GSI
   bool histogram_flag;     // polar histograms as global array
   bool stress_flag;
-  double area_value;       // Love-Weber area when given as a number
-  char *area_varname;      // ... or as an equal-style variable
-  int area_ivar;
-  char *idregion;
+  ScalarInput area_in;     // Love-Weber area: a number or v_name
+  int area_ivar;           // ... the variable, found at init
+  std::string idregion;    // empty: no region
   int iregion;
 
   // LIGGGHTS' computes that report contact forces: pair/gran/local for
@@ -73,6 +74,9 @@ class ComputeFabric : public Compute {
   std::vector<double> end_angle, angles;
   std::vector<int> recvcounts, displs;
   long nparticles;         // particles in group (and region)
+  long no_normal;          // contacts with coincident centres (no normal)
+  int first_no_normal;     // ... the first of them in contact_list
+  bool warned_no_normal;
 
   int nmax_atom;
 
@@ -85,6 +89,7 @@ class ComputeFabric : public Compute {
   bool atom_selected(int i) const;
   double sample_area();
   std::vector<int> contacts_per_particle() const;
+  void warn_no_normal();
   void index_contact_ends();
   double mean_stability_index();
 };

@@ -13,21 +13,9 @@ constexpr double kTwoPi = 2.0 * kPi;
 
 // ---- angles -----------------------------------------------------------------
 
-double direction_angle(double x, double y) {
-  double angle = std::atan2(y, x);
-  if (angle < 0.0) angle += kTwoPi;
-  if (angle >= kTwoPi) angle = 0.0;  // -tiny + 2pi can round up to 2pi
-  return angle;
-}
-
 double bin_width(int nbins) { return kTwoPi / nbins; }
 
 double bin_centre(int bin, double width) { return (bin + 0.5) * width; }
-
-int bin_of(double angle, int nbins) {
-  const int bin = static_cast<int>(angle / bin_width(nbins));
-  return bin < nbins ? bin : nbins - 1;  // guards angle / width rounding up to nbins
-}
 
 // Orientation of a pi-periodic quantity from its second harmonic
 // (c, s) = amplitude * (cos 2theta, sin 2theta).
@@ -123,6 +111,31 @@ void add_to_bin(Histogram& h, int bin, const Contact& c) {
 
 }  // namespace
 
+Contact make_contact(long a, long b, double lx, double ly, double fx, double fy,
+                     double radius_sum) {
+  Contact c{a, b, 0.0, 0.0, 0.0, 0.0, lx, ly};
+  const double length = std::hypot(lx, ly);  // no underflow for |l| ~ 1e-300
+  if (!std::isfinite(length) || !(length > kCoincidentFraction * radius_sum)) return c;
+  c.nx = lx / length;
+  c.ny = ly / length;
+  c.fn = fx * c.nx + fy * c.ny;
+  c.ft = -fx * c.ny + fy * c.nx;
+  return c;
+}
+
+bool has_normal(const Contact& c) {
+  return std::isfinite(c.nx) && std::isfinite(c.ny) && (c.nx != 0.0 || c.ny != 0.0);
+}
+
+int angle_bin(double angle, int nbins) {
+  if (!std::isfinite(angle) || nbins < 1) return -1;
+  double wrapped = std::fmod(angle, kTwoPi);  // exact
+  if (wrapped < 0.0) wrapped += kTwoPi;
+  if (wrapped >= kTwoPi) wrapped = 0.0;  // -tiny + 2pi can round up to 2pi
+  const int bin = static_cast<int>(wrapped / bin_width(nbins));
+  return bin < nbins ? bin : nbins - 1;  // wrapped / width can round up to nbins
+}
+
 Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins) {
   require_usable_bin_count(nbins);
   const auto n = static_cast<std::size_t>(nbins);
@@ -130,8 +143,11 @@ Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins) {
               std::vector<double>(n, 0.0), 0};
 
   for (const Contact& c : contacts) {
-    add_to_bin(h, bin_of(direction_angle(c.nx, c.ny), nbins), c);
-    add_to_bin(h, bin_of(direction_angle(-c.nx, -c.ny), nbins), c);  // same fn, ft
+    if (!has_normal(c)) continue;
+    for (double angle : {std::atan2(c.ny, c.nx), std::atan2(-c.ny, -c.nx)}) {  // same fn, ft
+      const int bin = angle_bin(angle, nbins);
+      if (bin >= 0) add_to_bin(h, bin, c);
+    }
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (h.count[i] > 0.0) {
@@ -161,10 +177,15 @@ Anisotropy normal_anisotropy_histogram(const Histogram& h, BinCorrection correct
 }
 
 Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts) {
-  if (contacts.empty()) return {0.0, 0.0};
   Eigen::Matrix2d phi = Eigen::Matrix2d::Zero();
-  for (const Contact& c : contacts) phi += normal_dyad(c);
-  phi /= static_cast<double>(contacts.size());
+  long n = 0;
+  for (const Contact& c : contacts) {
+    if (!has_normal(c)) continue;
+    phi += normal_dyad(c);
+    ++n;
+  }
+  if (n == 0) return {0.0, 0.0};
+  phi /= static_cast<double>(n);
   const Anisotropy gap = deviator_of(phi);
   return {2.0 * gap.a, gap.theta};
 }
@@ -192,16 +213,19 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram& h, BinCorrection cor
 ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
                                         const Anisotropy& fabric) {
   ForceAnisotropy result{0.0, 0.0, 0.0, 0.0, 0.0, 0};
-  if (contacts.empty()) return result;
   Eigen::Matrix2d chi_n = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d chi_t = Eigen::Matrix2d::Zero();
+  long with_normal = 0;
   for (const Contact& c : contacts) {
+    if (!has_normal(c)) continue;
+    ++with_normal;
     const double density = relative_fabric_density(c, fabric);
     if (!(density > 0.0)) continue;
     chi_n += (c.fn / density) * normal_dyad(c);
     chi_t += (c.ft / density) * symmetric_normal_tangent(c);
   }
-  const double n = static_cast<double>(contacts.size());
+  if (with_normal == 0) return result;
+  const double n = static_cast<double>(with_normal);
   chi_n /= n;
   chi_t /= n;
 
@@ -240,6 +264,7 @@ Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double a
   if (!(area > 0.0)) throw std::invalid_argument("fabric: Love-Weber area must be > 0");
   Eigen::Matrix2d sigma = Eigen::Matrix2d::Zero();
   for (const Contact& c : contacts) {
+    if (!has_normal(c)) continue;
     const Eigen::Vector2d normal(c.nx, c.ny);
     const Eigen::Vector2d tangent(-c.ny, c.nx);
     const Eigen::Vector2d force = c.fn * normal + c.ft * tangent;

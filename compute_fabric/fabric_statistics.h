@@ -27,6 +27,30 @@ struct Contact {
   double lx, ly;
 };
 
+// Two disks whose centres coincide (e.g. created at one point) have no contact
+// normal: a branch vector shorter than this fraction of the radius sum leaves the
+// contact without one. Such a contact still counts in the coordination numbers but
+// is left out of every direction statistic below (fabric, force roses, stress)
+// and of the stability index.
+constexpr double kCoincidentFraction = 1e-12;
+
+// The contact of a and b from the branch vector l (see Contact), the force (fx, fy)
+// on b and the radius sum r_a + r_b (wall: r_a): n = l / |l|, fn = f.n, ft = f.t.
+// Without a normal (|l| <= kCoincidentFraction * radius_sum, l not finite, or
+// radius_sum NaN) nx = ny = fn = ft = 0, whatever the force (LIGGGHTS' contact
+// models return NaN forces for coincident centres).
+Contact make_contact(long a, long b, double lx, double ly, double fx, double fy,
+                     double radius_sum);
+
+// False when the contact has no normal: nx or ny not finite, or both 0. Such
+// contacts are skipped by polar_histogram, the tensors and love_weber_stress.
+bool has_normal(const Contact& c);
+
+// The bin among nbins (width 2 pi / nbins, bin 0 from +x) of an angle in radians of
+// any range, wrapped to [0, 2 pi); -1 (no bin) for a NaN or infinite angle or
+// nbins < 1, so a histogram never indexes out of range.
+int angle_bin(double angle, int nbins);
+
 // The paper's prefactor 2 sin(dth)/(N dth) inverts the bin-averaging correction;
 // Unbiased (2 dth/(N sin dth)) recovers a model anisotropy exactly. The published
 // one is low by the factor (sin dth/dth)^2: 0.9600 for 18 bins.
@@ -51,7 +75,7 @@ struct Histogram {
 };
 
 // Each contact enters twice (n and -n), so the rose is point-symmetric and
-// sum(count) = 2 x contacts. nbins must be >= 3 and != 4: with 1 or 2 bins
+// sum(count) = 2 x contacts with a normal (has_normal). nbins must be >= 3 and != 4: with 1 or 2 bins
 // sin(dth) = 0, and with 4 bins every centre has cos 2theta = 0, so the
 // cos 2theta_a part of the fabric is invisible. Throws std::invalid_argument.
 Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins);
@@ -61,8 +85,9 @@ Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins);
 Anisotropy normal_anisotropy_histogram(const Histogram& h,
                                        BinCorrection correction = BinCorrection::Unbiased);
 
-// phi = (1/N) sum n (x) n; a = 2 (phi1 - phi2), theta along the major axis.
-// Binning-free and the exact limit of the histogram estimate. No contacts -> {0, 0}.
+// phi = (1/N) sum n (x) n over the N contacts with a normal; a = 2 (phi1 - phi2),
+// theta along the major axis. Binning-free and the exact limit of the histogram
+// estimate. No contacts with a normal -> {0, 0}.
 Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts);
 
 // Mean-force rose f_n(th) = f0 [1 + an cos 2(th - theta_n)] and tangential rose
@@ -92,7 +117,7 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram& h,
 // removes the fabric's own anisotropy from the force tensors:
 //   chi_n = (1/N) sum fn n (x) n / w;       f0 = tr chi_n;  an = 2 (chi_n1 - chi_n2) / f0
 //   chi_t = sym((1/N) sum ft n (x) t / w);  at = 2 (chi_t1 - chi_t2) / f0
-// theta_n, theta_t along the major eigenvectors. For the model roses above this
+// over the N contacts with a normal; theta_n, theta_t along the major eigenvectors. For the model roses above this
 // returns (an, theta_n, f0, at, theta_t) exactly. The model density is only valid
 // for a < 1; contacts where w <= 0 are skipped (the model cannot describe them).
 ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
@@ -116,7 +141,8 @@ Coordination coordination(const std::vector<int>& contacts_per_particle);
 
 // sigma_ij = (1/A) sum f_i l_j with f = fn n + ft t the force on b: compression
 // positive, as in soil mechanics. Not symmetric when tangential forces carry a
-// moment. area is the sample area per unit thickness; area <= 0 throws
+// moment. Contacts without a normal are skipped (their branch vector is ~0, so
+// they carry no moment, and their force may be NaN). area is the sample area per unit thickness; area <= 0 throws
 // std::invalid_argument (check it before, e.g. as an error->all in the compute).
 Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double area);
 

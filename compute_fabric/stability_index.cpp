@@ -37,6 +37,10 @@ double misfit_from_anchor(const std::vector<double>& sorted, std::size_t anchor)
 }  // namespace
 
 double stability_index(std::vector<double> angles) {
+  // a contact without a normal (NaN angle) has no place on the circle
+  angles.erase(std::remove_if(angles.begin(), angles.end(),
+                              [](double angle) { return !std::isfinite(angle); }),
+               angles.end());
   if (angles.size() < 2) return 1.0;
   for (double& angle : angles) angle = wrap_to_full_turn(angle);
   std::sort(angles.begin(), angles.end());

@@ -11,7 +11,8 @@ namespace fabric {
 // and n evenly spaced positions anchored at one of them, matched in circular
 // order. 0 for an evenly spaced arrangement; larger means less stable.
 // angles: radians about the particle's centre, any order and any range (taken by
-// value because they are normalised and sorted in place). 0 or 1 contact -> 1.
+// value because they are normalised and sorted in place). NaN or infinite angles
+// (contacts without a normal) are left out; 0 or 1 remaining contact -> 1.
 double stability_index(std::vector<double> angles);
 
 }  // namespace fabric

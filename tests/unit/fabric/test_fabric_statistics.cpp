@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -451,6 +452,168 @@ TEST(LoveWeber, WallContactsGiveTheWallTraction) {
 TEST(LoveWeber, RejectsNonPositiveArea) {
   EXPECT_THROW(fabric::love_weber_stress({}, 0.0), std::invalid_argument);
   EXPECT_THROW(fabric::love_weber_stress({}, -1.0), std::invalid_argument);
+}
+
+// ---- contacts without a normal (coincident centres) ----------------------------
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+TEST(AngleBin, NonFiniteAnglesHaveNoBin) {
+  for (double angle : {kNaN, kInf, -kInf}) EXPECT_EQ(fabric::angle_bin(angle, 18), -1) << angle;
+  EXPECT_EQ(fabric::angle_bin(0.5, 0), -1);
+}
+
+TEST(AngleBin, AnyFiniteAngleIsInRange) {
+  EXPECT_EQ(fabric::angle_bin(0.0, 18), 0);
+  EXPECT_EQ(fabric::angle_bin(deg(10), 18), 0);
+  EXPECT_EQ(fabric::angle_bin(deg(190), 18), 9);
+  EXPECT_EQ(fabric::angle_bin(deg(-10), 18), 17);
+  EXPECT_EQ(fabric::angle_bin(2.0 * kPi, 18), 0);
+  EXPECT_EQ(fabric::angle_bin(-1e-17, 18), 0);  // -tiny + 2 pi rounds to 2 pi
+  EXPECT_EQ(fabric::angle_bin(std::nextafter(2.0 * kPi, 0.0), 18), 17);
+  for (double angle : {1e300, -1e300, 1e-300, -1e-300, 4.0 * kPi + 0.1, -7.5}) {
+    const int bin = fabric::angle_bin(angle, 36);
+    EXPECT_GE(bin, 0) << angle;
+    EXPECT_LT(bin, 36) << angle;
+  }
+}
+
+TEST(MakeContact, NormalAndForceComponents) {
+  // l along +y, force on b (3, 4): fn = f.n = 4, ft = f.t with t = (-1, 0): -3
+  const Contact c = fabric::make_contact(1, 2, 0.0, 0.002, 3.0, 4.0, 0.002);
+  EXPECT_EQ(c.a, 1);
+  EXPECT_EQ(c.b, 2);
+  EXPECT_EQ(c.nx, 0.0);
+  EXPECT_EQ(c.ny, 1.0);
+  EXPECT_EQ(c.fn, 4.0);
+  EXPECT_EQ(c.ft, -3.0);
+  EXPECT_EQ(c.lx, 0.0);
+  EXPECT_EQ(c.ly, 0.002);
+  EXPECT_TRUE(fabric::has_normal(c));
+}
+
+TEST(MakeContact, CoincidentCentresHaveNoNormal) {
+  // |l| <= 1e-12 (r_a + r_b), whatever the force (LIGGGHTS gives NaN there)
+  const double radius_sum = 0.002;
+  for (double d : {0.0, 1e-300, 1e-20, 1e-12 * radius_sum}) {
+    const Contact c = fabric::make_contact(1, 2, d, 0.0, kNaN, kNaN, radius_sum);
+    EXPECT_FALSE(fabric::has_normal(c)) << d;
+    EXPECT_EQ(c.nx, 0.0);
+    EXPECT_EQ(c.ny, 0.0);
+    EXPECT_EQ(c.fn, 0.0);
+    EXPECT_EQ(c.ft, 0.0);
+    EXPECT_EQ(c.lx, d);
+  }
+  for (double bad : {kNaN, kInf})
+    EXPECT_FALSE(fabric::has_normal(fabric::make_contact(1, 2, bad, 0.0, 1.0, 0.0, radius_sum)));
+  EXPECT_FALSE(fabric::has_normal(fabric::make_contact(1, 2, 1.0, 0.0, 1.0, 0.0, kNaN)));
+}
+
+TEST(MakeContact, NearlyCoincidentCentresStillHaveANormal) {
+  // 1e-14 is 5e-12 of the radius sum: the direction is still well defined
+  const Contact c = fabric::make_contact(1, 2, 1e-14, 0.0, 169000.0, 0.0, 0.002);
+  EXPECT_TRUE(fabric::has_normal(c));
+  EXPECT_EQ(c.nx, 1.0);
+  EXPECT_EQ(c.ny, 0.0);
+  EXPECT_EQ(c.fn, 169000.0);
+  EXPECT_EQ(c.ft, 0.0);
+  // without radii (point particles) only exactly coincident centres lack a normal
+  EXPECT_TRUE(fabric::has_normal(fabric::make_contact(1, 2, 0.0, -1e-300, 0.0, 0.0, 0.0)));
+  EXPECT_FALSE(fabric::has_normal(fabric::make_contact(1, 2, 0.0, 0.0, 0.0, 0.0, 0.0)));
+}
+
+TEST(HasNormal, NaNOrZeroNormals) {
+  EXPECT_TRUE(fabric::has_normal(contact_at(deg(30), 1.0)));
+  EXPECT_FALSE(fabric::has_normal(Contact{0, 1, kNaN, 0.0, 1.0, 0.0, 0.0, 0.0}));
+  EXPECT_FALSE(fabric::has_normal(Contact{0, 1, 0.0, kInf, 1.0, 0.0, 0.0, 0.0}));
+  EXPECT_FALSE(fabric::has_normal(Contact{0, 1, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0}));
+}
+
+// A contact with NaN normal and forces (as computed from coincident centres
+// before the guard), and one without a normal as make_contact returns it.
+std::vector<Contact> with_normal_less_contacts(std::vector<Contact> good) {
+  good.push_back(Contact{0, 2, kNaN, kNaN, kNaN, kNaN, 0.0, 0.0});
+  good.push_back(fabric::make_contact(1, 2, 0.0, 0.0, kNaN, kNaN, 0.002));
+  return good;
+}
+
+TEST(NoNormal, LeftOutOfTheHistogram) {
+  const std::vector<Contact> good = {contact_at(deg(10), 2.0, 0.5), contact_at(deg(100), 1.0)};
+  const fabric::Histogram expected = fabric::polar_histogram(good, 18);
+  const fabric::Histogram h = fabric::polar_histogram(with_normal_less_contacts(good), 18);
+  EXPECT_EQ(h.count, expected.count);
+  EXPECT_EQ(h.mean_fn, expected.mean_fn);
+  EXPECT_EQ(h.mean_ft, expected.mean_ft);
+  EXPECT_EQ(h.empty_bins, 14);
+}
+
+TEST(NoNormal, LeftOutOfTheTensorsAndTheStress) {
+  const std::vector<Contact> good = {contact_at(deg(0), 2.0, 0.5, 0.002),
+                                     contact_at(deg(90), 1.0, 0.0, 0.002)};
+  const std::vector<Contact> all = with_normal_less_contacts(good);
+  const fabric::Anisotropy fa = fabric::normal_anisotropy_tensor(all);
+  EXPECT_NEAR(fa.a, 0.0, kTol);  // phi = diag(1/2, 1/2): two contacts, not four
+  const fabric::ForceAnisotropy ft = fabric::force_anisotropy_tensor(all, fa);
+  // chi_n = diag(2, 1)/2: f0 = 1.5, an = 2 (1 - 1/2) / 1.5 = 2/3 along x
+  EXPECT_NEAR(ft.f0, 1.5, kTol);
+  EXPECT_NEAR(ft.an, 2.0 / 3.0, kTol);
+  EXPECT_NEAR(ft.theta_n, 0.0, kTol);
+  const Eigen::Matrix2d sigma = fabric::love_weber_stress(all, 1e-4);
+  EXPECT_TRUE(sigma.allFinite());
+  EXPECT_NEAR(sigma(0, 0), 2.0 * 0.002 / 1e-4, 1e-9);
+  EXPECT_NEAR(sigma(1, 1), 1.0 * 0.002 / 1e-4, 1e-9);
+  EXPECT_NEAR(sigma(1, 0), 0.5 * 0.002 / 1e-4, 1e-9);  // ft = 0.5 along +y on l along x
+  EXPECT_NEAR(sigma(0, 1), 0.0, 1e-9);
+}
+
+TEST(NoNormal, OnlyContactsWithoutNormalGiveZeros) {
+  const std::vector<Contact> none = with_normal_less_contacts({});
+  const fabric::Histogram h = fabric::polar_histogram(none, 18);
+  EXPECT_EQ(h.empty_bins, 18);
+  for (const fabric::Anisotropy& f :
+       {fabric::normal_anisotropy_histogram(h), fabric::normal_anisotropy_tensor(none)}) {
+    EXPECT_EQ(f.a, 0.0);
+    EXPECT_EQ(f.theta, 0.0);
+  }
+  for (const fabric::ForceAnisotropy& f :
+       {fabric::force_anisotropy_histogram(h), fabric::force_anisotropy_tensor(none, {0.0, 0.0})}) {
+    EXPECT_EQ(f.an, 0.0);
+    EXPECT_EQ(f.f0, 0.0);
+    EXPECT_EQ(f.at, 0.0);
+  }
+  EXPECT_TRUE(fabric::love_weber_stress(none, 1.0).isZero(0.0));
+}
+
+// ---- all contacts in one bin --------------------------------------------------
+
+// Two contacts along +x: bins 0 and 9 (centres 10 and 190 deg) hold 2 entries each.
+// Fabric: N = 4, sum N_g cos 2th_g = 4 cos 20 deg, so a = (2c/4) 4 = 2c at 10 deg,
+// c = dth/sin dth (the histogram cannot resolve inside a bin); tensor: a = 2 at 0.
+// Forces: f0 = 5, an = (c/(pi f0)) |2 f0 e^(i 20 deg) dth| = 2 c dth / pi at 10 deg.
+TEST(OneBin, AllContactsAlongOneDirection) {
+  const std::vector<Contact> contacts = {contact_at(0.0, 5.0), contact_at(0.0, 5.0)};
+  const fabric::Histogram h = fabric::polar_histogram(contacts, 18);
+  EXPECT_EQ(h.count[0], 2.0);
+  EXPECT_EQ(h.count[9], 2.0);
+  EXPECT_EQ(h.empty_bins, 16);
+  const double width = deg(20), c = width / std::sin(width);
+  const fabric::Anisotropy binned = fabric::normal_anisotropy_histogram(h);
+  EXPECT_NEAR(binned.a, 2.0 * c, kTol);
+  EXPECT_NEAR(binned.theta, deg(10), kTol);
+  const fabric::Anisotropy tensor = fabric::normal_anisotropy_tensor(contacts);
+  EXPECT_NEAR(tensor.a, 2.0, kTol);
+  EXPECT_NEAR(tensor.theta, 0.0, kTol);
+  const fabric::ForceAnisotropy forces = fabric::force_anisotropy_histogram(h);
+  EXPECT_NEAR(forces.f0, 5.0, kTol);
+  EXPECT_NEAR(forces.an, 2.0 * c * width / kPi, kTol);
+  EXPECT_NEAR(forces.theta_n, deg(10), kTol);
+  EXPECT_EQ(forces.at, 0.0);
+  EXPECT_EQ(forces.empty_bins, 16);
+  // tensor: a = 2 makes w = 1 + 2 cos 2(th) = 3 at th = 0: chi_n = diag(5/3, 0)
+  const fabric::ForceAnisotropy ft = fabric::force_anisotropy_tensor(contacts, tensor);
+  EXPECT_NEAR(ft.f0, 5.0 / 3.0, kTol);
+  EXPECT_NEAR(ft.an, 2.0, kTol);
 }
 
 // ---- no contacts at all ---------------------------------------------------------

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -126,6 +127,21 @@ TEST(StabilityIndex, IsNonNegativeAndFinite) {
     EXPECT_TRUE(std::isfinite(lambda));
     EXPECT_GE(lambda, 0.0);
   }
+}
+
+// A contact without a normal (coincident centres) has a NaN angle: it has no
+// place on the circle and is left out, never turning lambda into NaN or inf.
+TEST(StabilityIndex, NonFiniteAnglesAreLeftOut) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> three = radians({0, 120, 240});
+  three.push_back(nan);
+  EXPECT_NEAR(fabric::stability_index(three), 0.0, kTol);
+  EXPECT_EQ(fabric::stability_index({0.0, nan}), 1.0);  // one contact with a place
+  EXPECT_EQ(fabric::stability_index({nan, inf, -inf}), 1.0);
+  std::vector<double> quarter = radians({0, 90});
+  quarter.insert(quarter.begin() + 1, nan);
+  EXPECT_NEAR(fabric::stability_index(quarter), 0.25, kTol);
 }
 
 }  // namespace
