@@ -91,7 +91,8 @@ class StyleArgs {
     char *end = nullptr;
     errno = 0;
     const long v = strtol(text, &end, 10);
-    if (*text == '\0' || *end != '\0' || errno == ERANGE) bad("is not an integer", usage);
+    if (*text == '\0' || *end != '\0') bad("is not an integer", usage);
+    if (errno == ERANGE) bad("is out of range", usage);
     if (v < lo || v > hi)
       bad("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi), usage);
     return v;

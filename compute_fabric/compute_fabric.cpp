@@ -84,10 +84,8 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
   gathered_step(-1), nparticles(0), no_normal(0), first_no_normal(0),
   warned_no_normal(false), nmax_atom(0)
 {
-  // (tests/scripts/dimension3_errors.in matches "Compute fabric requires dimension 2")
   if (domain->dimension != 2)
-    error->all(FLERR, "Compute fabric requires dimension 2: it is a 2D compute; set "
-                      "dimension 2 before create_box");
+    error->all(FLERR, msg("requires dimension 2: it is a 2D compute; set dimension 2 before create_box").c_str());
   if (!atom->radius_flag)
     error->all(FLERR, msg("requires per-atom radii; use atom_style granular (or sphere)").c_str());
   if (atom->tag_enable == 0 || atom->map_style == 0)
@@ -447,28 +445,32 @@ void ComputeFabric::warn_no_normal()
 }
 
 /* ----------------------------------------------------------------------
-   the contact angles about each particle, grouped by tag (counting sort:
-   tags are at most natoms with an atom map, so this is O(contacts))
+   the contact angles about each particle, grouped by tag: a stable sort of
+   the contact ends, so that time and memory follow the number of contacts,
+   not the largest atom ID (IDs may be sparse up to 2^31 with map hash)
 ------------------------------------------------------------------------- */
 
 void ComputeFabric::index_contact_ends()
 {
-  long maxtag = 0;
-  for (const fabric::Contact &k : contact_list) maxtag = std::max({maxtag, k.a, k.b});
-  end_start.assign(maxtag + 2, 0);
-  for (const fabric::Contact &k : contact_list) {
-    end_start[k.a + 1]++;
-    if (k.b >= 0) end_start[k.b + 1]++;
-  }
-  for (long t = 0; t <= maxtag; t++) end_start[t + 1] += end_start[t];
-  end_angle.resize(end_start[maxtag + 1]);
-  fill.assign(end_start.begin(), end_start.end() - 1);
+  ends.clear();
   for (const fabric::Contact &k : contact_list) {
     // a contact without a normal counts for both particles but has no angle
     const double theta = fabric::has_normal(k) ? std::atan2(k.ny, k.nx) : NAN;
-    end_angle[fill[k.a]++] = theta;
-    if (k.b >= 0) end_angle[fill[k.b]++] = theta + M_PI;
+    ends.push_back({k.a, theta});
+    if (k.b >= 0) ends.push_back({k.b, theta + M_PI});
   }
+  std::stable_sort(ends.begin(), ends.end(), [](const End &x, const End &y) { return x.tag < y.tag; });
+  end_tag.clear();
+  end_start.clear();
+  end_angle.resize(ends.size());
+  for (size_t e = 0; e < ends.size(); e++) {
+    if (e == 0 || ends[e].tag != ends[e - 1].tag) {
+      end_tag.push_back(ends[e].tag);
+      end_start.push_back(static_cast<int>(e));
+    }
+    end_angle[e] = ends[e].angle;
+  }
+  end_start.push_back(static_cast<int>(ends.size()));
 }
 
 /* ----------------------------------------------------------------------
@@ -614,9 +616,11 @@ void ComputeFabric::compute_peratom()
 
   for (int i = 0; i < nlocal; i++) {
     if (!atom_selected(i)) continue;
-    const size_t t = static_cast<size_t>(atom->tag[i]);
-    const int first = t + 1 < end_start.size() ? end_start[t] : 0;
-    const int last = t + 1 < end_start.size() ? end_start[t + 1] : 0;
+    const auto it = std::lower_bound(end_tag.begin(), end_tag.end(), static_cast<long>(atom->tag[i]));
+    const bool found = it != end_tag.end() && *it == atom->tag[i];
+    const size_t t = static_cast<size_t>(it - end_tag.begin());
+    const int first = found ? end_start[t] : 0;
+    const int last = found ? end_start[t + 1] : 0;
     angles.assign(end_angle.begin() + first, end_angle.begin() + last);
     array_atom[i][0] = static_cast<double>(last - first);
     array_atom[i][1] = fabric::stability_index(angles);

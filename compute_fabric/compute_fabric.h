@@ -70,7 +70,13 @@ class ComputeFabric : public Compute {
   std::vector<fabric::Contact> contact_list;   // all contacts, identical on every rank
   std::vector<double> sendbuf, recvbuf;
   std::vector<std::pair<uint64_t, int>> sort_keys;
-  std::vector<int> end_start, fill;        // contact angles about each tag (CSR)
+  struct End {
+    long tag;
+    double angle;
+  };
+  std::vector<End> ends;                   // both ends of every contact
+  std::vector<long> end_tag;               // the tags with contacts, ascending
+  std::vector<int> end_start;              // contact angles about end_tag[t] (CSR)
   std::vector<double> end_angle, angles;
   std::vector<int> recvcounts, displs;
   long nparticles;         // particles in group (and region)
