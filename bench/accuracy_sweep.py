@@ -1077,7 +1077,7 @@ def main(argv):
           f"Sample: generate_sample.py --scale {args.scale:g} (seeds {', '.join(map(str, args.seeds))}), "
           f"in.prepare; sheared to ε_11 = {args.strain:g}; every run on 1 MPI rank"
           + (" (the ranks sweep excepted)" if "ranks" in args.sweeps else "")
-          + f", {args.jobs} at a time; {took} (runs reused from {args.rundir} are not "
+          + f", {args.jobs} at a time; {took} (runs reused from {os.path.relpath(args.rundir, ROOT)} are not "
           f"re-run).  ",
           f"Errors: each run against the reference of its sweep (**ref**) on a common ε_11 grid "
           f"over 0..{args.strain:g}; Δ = run − reference. 'RMS Δ(σ1/σ3) vs case ref': against the "

@@ -1,5 +1,5 @@
 #pragma once
-// LIGGGHTS-free geometry of fix membrane2d (see /work/shared/spec/membrane2d.md):
+// LIGGGHTS-free geometry of fix membrane2d (doc/fix_membrane2d.md):
 // chain of outermost disks per side, its polyline, membrane forces, escapees,
 // sample area / widths and the band selection. Lengths in m, pressure in Pa,
 // thickness in m, forces in N. Kept free of LIGGGHTS so it can be tested exactly.
