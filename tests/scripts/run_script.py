@@ -17,6 +17,7 @@ The script states its own expectations in comment lines starting with '#@':
 The script prints values as:  print "RESULT name ${var}"
 """
 import argparse
+import concurrent.futures
 import os
 import re
 import subprocess
@@ -113,12 +114,20 @@ def main():
             cases = [d[len("error"):].split(":::") for d in dirs if d.startswith("error ")]
             if not cases:
                 failures.append("no '#@ error' cases in %s" % script)
-            for i, (expect, command) in enumerate(cases):
-                expect, command = expect.strip(), command.strip()
-                case = os.path.join(work, "case%d.in" % i)
+            def run_case(i, command):
+                # each case in its own folder: cases run two at a time (a run mostly
+                # waits for MPI start-up)
+                folder = os.path.join(work, "case%d" % i)
+                os.makedirs(folder)
+                case = os.path.join(folder, "case.in")
                 with open(case, "w") as f:
                     f.write(text.replace("#@ case\n", command.replace("\\n", "\n") + "\n"))
-                rc, out = run(a.exe, a.np, case, work, a.timeout, os.path.dirname(script))
+                return run(a.exe, a.np, case, folder, a.timeout, os.path.dirname(script))
+
+            with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+                outcomes = list(pool.map(lambda ic: run_case(ic[0], ic[1][1].strip()), enumerate(cases)))
+            for (expect, command), (rc, out) in zip(cases, outcomes):
+                expect, command = expect.strip(), command.strip()
                 ok = rc != 0 and expect in out and "TIMEOUT" not in out
                 print("%s error case '%s' -> '%s'" % ("ok  " if ok else "FAIL", command, expect))
                 if not ok:
