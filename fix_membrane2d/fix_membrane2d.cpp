@@ -1010,7 +1010,7 @@ void FixMembrane2d::write_restart(FILE *fp)
   types_applied = false;   // pre_force switches the disks a region write skipped
   const std::uint64_t checksum = group_checksum();
 
-  membrane::RecordWriter out;
+  RestartRecordWriter out = membrane::record_writer();
   // the definition
   out.put((sides[LEFT].active ? 1 : 0) + (sides[RIGHT].active ? 2 : 0));
   out.put(membrane_type);
@@ -1028,11 +1028,11 @@ void FixMembrane2d::write_restart(FILE *fp)
   out.put(ylo_detected);
   out.put(yhi_detected);
   for (const SideState &s : sides) {
-    out.put_tags(s.chain_tags);
-    out.put_tags(s.escaped_tags);
+    membrane::put_tags(out, s.chain_tags);
+    membrane::put_tags(out, s.escaped_tags);
     for (double r : s.escaped_radius) out.put(r);
-    out.put_watch(s.watch);
-    out.put_disks(s.watch_band);
+    membrane::put_watch(out, s.watch);
+    membrane::put_disks(out, s.watch_band);
     out.put(s.warned ? 1 : 0);
   }
   for (bigint c : {redetections, failures, widenings, changes}) out.put(static_cast<double>(c));
@@ -1063,7 +1063,7 @@ int FixMembrane2d::pack_restart(int i, double *buf)
 
 void FixMembrane2d::restart(char *raw)
 {
-  membrane::RecordReader in(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double));
+  RestartRecordReader in = membrane::record_reader(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double));
   if (!in.ok())
     error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " + in.error() +
                           "; read it with the version that wrote it, or define this fix with another ID "
@@ -1090,12 +1090,12 @@ void FixMembrane2d::restart(char *raw)
   ylo_detected = in.get();
   yhi_detected = in.get();
   for (SideState &s : sides) {
-    in.get_tags(s.chain_tags);
-    in.get_tags(s.escaped_tags);
+    membrane::get_tags(in, s.chain_tags);
+    membrane::get_tags(in, s.escaped_tags);
     s.escaped_radius.resize(s.escaped_tags.size());
     for (double &r : s.escaped_radius) r = in.get();
-    in.get_watch(s.watch);
-    in.get_disks(s.watch_band);
+    membrane::get_watch(in, s.watch);
+    membrane::get_disks(in, s.watch_band);
     s.now = s.watch_band;
     s.warned = in.get() != 0.0;
   }

@@ -29,6 +29,7 @@
 #include "update.h"
 
 #include "contact_scales.h"
+#include "restart_record.h"
 #include "scalar_input.h"
 #include "style_args.h"
 #include "stability_checks.h"
@@ -39,6 +40,8 @@ using namespace FixConst;
 namespace {
 
 const std::string PREFIX = "Fix stability/guard: ";
+constexpr double RECORD_MAGIC = 7.0e9 + 4871.0;   // of this style's restart record
+constexpr int RECORD_VERSION = 1;
 constexpr double SAFE_TIME_STEP_RATIO = 0.15;   // x sqrt(m_min/k_n), the published set-up
 constexpr double BLOW_UP_STEP_FRACTION = 0.05;  // |v| dt / r of a run that has blown up
 std::string msg(const std::string &text) { return PREFIX + text; }
@@ -58,12 +61,6 @@ const char *const ILIMIT_USAGE =
 const char *const INERTIAL_USAGE =
     "inertial R P, the strain rate R >= 0 (1/time; use abs() for a signed rate) and the "
     "pressure P > 0 (force/area), each a number or v_name of an equal-style variable";
-
-// %g of a computed value, with "nan" for every NaN (printf may say "-nan")
-std::string value_text(double v)
-{
-  return std::isnan(v) ? "nan" : number_text(v);
-}
 
 // a value and the atom ID it belongs to, for MPI_MAXLOC over the ranks
 struct ValueTag {
@@ -131,6 +128,7 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
                                       "or leave ilimit out").c_str());
 
   vector_flag = 1;
+  restart_global = 1;
   size_vector = VECTOR_SIZE;
   global_freq = nevery;
   extvector = 0;
@@ -211,6 +209,36 @@ void FixStabilityGuard::end_of_step()
 double FixStabilityGuard::compute_vector(int n)
 {
   return values[n];
+}
+
+/* ----------------------------------------------------------------------
+   restart: the warnings given (each is given once, and counted in f_ID[6]),
+   so that a run continued from a restart file says and counts what one
+   straight through does
+------------------------------------------------------------------------- */
+
+void FixStabilityGuard::write_restart(FILE *fp)
+{
+  RestartRecordWriter out(RECORD_MAGIC, RECORD_VERSION);
+  for (double v : {static_cast<double>(warnings), warned_overlap ? 1.0 : 0.0, warned_inertial ? 1.0 : 0.0, warned_dt})
+    out.put(v);
+  const std::vector<double> &rec = out.finish();
+  if (comm->me != 0) return;
+  const int size = static_cast<int>(rec.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(rec.data(), sizeof(double), rec.size(), fp);
+}
+
+void FixStabilityGuard::restart(char *raw)
+{
+  RestartRecordReader in(reinterpret_cast<const double *>(raw), 7, RECORD_MAGIC, RECORD_VERSION);
+  warnings = static_cast<int>(in.get());
+  warned_overlap = in.get() != 0.0;
+  warned_inertial = in.get() != 0.0;
+  warned_dt = in.get();
+  if (!in.finished())
+    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " + in.error() +
+                          "; define this fix with another ID to start its checks afresh").c_str());
 }
 
 /* ----------------------------------------------------------------------
@@ -365,8 +393,8 @@ void FixStabilityGuard::check_inertial_number()
   if (!std::isfinite(inertial))
     error->all(FLERR, keyword_message(PREFIX, "inertial", rate_in.text() + " " + pressure_in.text(),
                                       "the inertial number overflows at step " +
-                                      std::to_string(update->ntimestep) + " (R = " + value_text(rate) +
-                                      ", P = " + value_text(pressure) + "); the pressure is too "
+                                      std::to_string(update->ntimestep) + " (R = " + number_text(rate) +
+                                      ", P = " + number_text(pressure) + "); the pressure is too "
                                       "small for the rate").c_str());
   values[INERTIAL] = inertial;
   if (inertial <= inertial_limit || warned_inertial) return;
@@ -384,7 +412,7 @@ void FixStabilityGuard::check_inertial_number()
 void FixStabilityGuard::bad_inertial_value(const ScalarInput &in, double value, const char *must)
 {
   error->all(FLERR, keyword_message(PREFIX, "inertial", in.text(),
-                                    "is " + value_text(value) + " at step " +
+                                    "is " + number_text(value) + " at step " +
                                     std::to_string(update->ntimestep) +
                                     "; it must be a finite number " + must).c_str());
   std::abort();   // Error::all does not return; tells the compiler so

@@ -33,6 +33,8 @@ class FixStabilityGuard : public Fix {
   void setup(int);
   void end_of_step();
   double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
 
   // global vector layout (1-based in input scripts: f_ID[k]); values of the last check
   enum VectorIndex { STEP_FRACTION = 0, OVERLAP, TIME_STEP_RATIO, INERTIAL, LOST, WARNINGS, VECTOR_SIZE };

@@ -8,6 +8,7 @@ The script states its own expectations in comment lines starting with '#@':
   #@ expect NAME > VALUE           ... (also <) a bound
   #@ output TEXT                   the output must contain TEXT (e.g. a warning)
   #@ no-output TEXT                the output must not contain TEXT
+  #@ output-count N TEXT           the output must contain TEXT exactly N times
   #@ error SUBSTRING ::: COMMAND    replace the line '#@ case' by COMMAND: the run must
                                    fail with SUBSTRING in its output (one line per case;
                                    a literal \n in COMMAND starts a new input line)
@@ -66,6 +67,13 @@ def check_expectations(dirs, output, label):
                                          "output has" if must else "output lacks", text))
                 if not ok:
                     failures.append("%s: output %s '%s'" % (label, "lacks" if must else "has", text))
+        if d.startswith("output-count "):
+            _, n, text = d.split(None, 2)
+            seen = output.count(text)
+            ok = seen == int(n)
+            print("%s %s output has '%s' %d times (want %s)" % ("ok  " if ok else "FAIL", label, text, seen, n))
+            if not ok:
+                failures.append("%s: output has '%s' %d times, want %s" % (label, text, seen, n))
         w = d.split()
         if not w or w[0] != "expect":
             continue

@@ -22,11 +22,11 @@ DetectionWatch sample_watch()
 
 std::vector<double> sample_record()
 {
-  RecordWriter out;
+  RestartRecordWriter out = record_writer();
   out.put(42.0);
-  out.put_tags({7, 3, 11});
-  out.put_disks({{5, 0.1, 0.2, 0.003}, {9, -1e-3, 0.5, 0.001}});
-  out.put_watch(sample_watch());
+  put_tags(out, {7, 3, 11});
+  put_disks(out, {{5, 0.1, 0.2, 0.003}, {9, -1e-3, 0.5, 0.001}});
+  put_watch(out, sample_watch());
   return out.finish();
 }
 
@@ -35,21 +35,21 @@ std::vector<double> sample_record()
 TEST(MembraneRecord, RoundTripGivesEveryField)
 {
   const std::vector<double> rec = sample_record();
-  RecordReader in(rec.data(), rec.size());
+  RestartRecordReader in = record_reader(rec.data(), rec.size());
   ASSERT_TRUE(in.ok()) << in.error();
   EXPECT_EQ(in.version(), RECORD_VERSION);
   EXPECT_EQ(in.get(), 42.0);
   std::vector<long> tags;
-  in.get_tags(tags);
+  get_tags(in, tags);
   EXPECT_EQ(tags, (std::vector<long>{7, 3, 11}));
   std::vector<Disk> disks;
-  in.get_disks(disks);
+  get_disks(in, disks);
   ASSERT_EQ(disks.size(), 2u);
   EXPECT_EQ(disks[1].tag, 9);
   EXPECT_EQ(disks[1].x, -1e-3);
   EXPECT_EQ(disks[0].r, 0.003);
   DetectionWatch w;
-  in.get_watch(w);
+  get_watch(in, w);
   const DetectionWatch want = sample_watch();
   EXPECT_EQ(w.budget, want.budget);
   EXPECT_FALSE(w.always);
@@ -68,7 +68,7 @@ TEST(MembraneRecord, EarlierFormatIsRefused)
 {
   // a version-1 record starts with the left chain length
   const std::vector<double> old = {20.0, 1.0, 2.0, 3.0};
-  RecordReader in(old.data(), old.size());
+  RestartRecordReader in = record_reader(old.data(), old.size());
   EXPECT_FALSE(in.ok());
   EXPECT_NE(in.error().find("earlier version"), std::string::npos);
 }
@@ -77,7 +77,7 @@ TEST(MembraneRecord, OtherVersionIsRefused)
 {
   std::vector<double> rec = sample_record();
   rec[1] = RECORD_VERSION + 1;
-  RecordReader in(rec.data(), rec.size());
+  RestartRecordReader in = record_reader(rec.data(), rec.size());
   EXPECT_FALSE(in.ok());
   EXPECT_NE(in.error().find("format " + std::to_string(RECORD_VERSION + 1)), std::string::npos);
 }
@@ -86,13 +86,13 @@ TEST(MembraneRecord, CutRecordIsRefused)
 {
   std::vector<double> rec = sample_record();
   rec[2] = 8;   // the header says the record ends inside the tag list
-  RecordReader in(rec.data(), rec.size());
+  RestartRecordReader in = record_reader(rec.data(), rec.size());
   ASSERT_TRUE(in.ok());
   in.get();
   std::vector<long> tags;
-  in.get_tags(tags);   // 3 tags announced, 3 fit
+  get_tags(in, tags);   // 3 tags announced, 3 fit
   std::vector<Disk> disks;
-  in.get_disks(disks);
+  get_disks(in, disks);
   EXPECT_FALSE(in.ok());
   EXPECT_TRUE(disks.empty());
 }
@@ -100,7 +100,7 @@ TEST(MembraneRecord, CutRecordIsRefused)
 TEST(MembraneRecord, ExtraFieldsAreRefused)
 {
   const std::vector<double> rec = sample_record();
-  RecordReader in(rec.data(), rec.size());
+  RestartRecordReader in = record_reader(rec.data(), rec.size());
   in.get();
   EXPECT_FALSE(in.finished());
   EXPECT_NE(in.error().find("more fields"), std::string::npos);
@@ -110,6 +110,6 @@ TEST(MembraneRecord, LengthBeyondTheBufferIsRefused)
 {
   std::vector<double> rec = sample_record();
   rec[2] = static_cast<double>(rec.size() + 1);
-  RecordReader in(rec.data(), rec.size());
+  RestartRecordReader in = record_reader(rec.data(), rec.size());
   EXPECT_FALSE(in.ok());
 }
