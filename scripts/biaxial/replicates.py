@@ -101,10 +101,11 @@ def aggregate(samples):
 
 
 def _number(x, fmt, sign=False):
-    if isinstance(fmt, str):
-        text = fmt.format(x)
-        return ("+" + text) if sign and x >= 0 else text
-    return f"{x:+.{fmt}f}" if sign else f"{x:.{fmt}f}"
+    """x in the row's format (decimals or a format string), '+' in front when sign; a
+    value that rounds to zero is written without a minus."""
+    text = fmt.format(abs(x)) if isinstance(fmt, str) else f"{abs(x):.{fmt}f}"
+    negative = x < 0 and float(text) != 0.0
+    return ("-" if negative else "+" if sign else "") + text
 
 
 def interval_text(iv, fmt, n_samples, reason=None, sign=False):

@@ -11,7 +11,7 @@ import unittest
 import numpy as np
 
 import synthetic
-from biaxial import plots, replicates
+from biaxial import plots, replicates, stats
 from biaxial.curves import NotMeasurable, ratio_from_friction_angle
 
 # four samples: a common sample-to-sample shift of phi (and of E), the membrane 1 deg
@@ -144,6 +144,12 @@ class MissingAndSingle(unittest.TestCase):
         self.assertEqual(cells[0], ["peak s1/s3", "2.800", "2.720", "+0.080", "– (n = 1)"])
         self.assertIn("n = 1 sample (seed_12345): single values, no confidence interval",
                       replicates.preamble(["seed_12345"]))
+
+    def test_no_minus_zero(self):
+        iv = stats.Interval(-0.001, 0.0123, 3)
+        self.assertEqual(replicates.interval_text(iv, 2, 3, sign=True), "+0.00 ± 0.01")
+        self.assertEqual(replicates.interval_text(stats.Interval(-2.6, math.nan, 1), 1, 1),
+                         "-2.6")
 
 
 if __name__ == "__main__":
