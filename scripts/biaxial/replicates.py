@@ -93,6 +93,10 @@ class Row:
         """The first reason a sample could not measure the quantity, or None."""
         return next((str(v) for v in self.cells[case] if not measured(v)), None)
 
+    def missing(self, case, names):
+        """[(sample name, reason)] of the samples that could not measure it."""
+        return [(name, str(v)) for name, v in zip(names, self.cells[case]) if not measured(v)]
+
 
 def aggregate(samples):
     """[Row] in table order for the samples (list of {case: Run})."""
@@ -109,15 +113,27 @@ def _number(x, fmt, sign=False):
 
 
 def interval_text(iv, fmt, n_samples, reason=None, sign=False):
-    """'m +- h', 'm' (n = 1), with '(n = k of N)' when samples are missing."""
+    """'m +- h', 'm' (n = 1), with '(n = k of N)' when samples are missing (their
+    reasons: missing_notes); with no value the first sample's reason."""
     if iv.n == 0:
-        return reason or "not measurable"
+        text = reason or "not measurable"
+        return text + (f" (all {n_samples} samples)" if n_samples > 1 else "")
     text = _number(iv.mean, fmt, sign)
     if iv.has_interval:
         text += " ± " + _number(iv.half_width, fmt)
     if iv.n < n_samples:
-        text += f" (n = {iv.n} of {n_samples}{'; ' + reason if reason else ''})"
+        text += f" (n = {iv.n} of {n_samples})"
     return text
+
+
+def missing_notes(rows, names):
+    """One line per quantity, case and sample left out of a mean that has other samples."""
+    notes = []
+    for r in rows:
+        for c in CASES:
+            if 0 < r.per_case[c].n < r.n_samples:
+                notes += [f"{r.label}, {c}, {name}: {why}" for name, why in r.missing(c, names)]
+    return notes
 
 
 def significance_text(iv):
@@ -135,7 +151,7 @@ def build_table(rows):
     for r in rows:
         out.append([r.label]
                    + [interval_text(r.per_case[c], r.fmt, r.n_samples, r.reason(c)) for c in CASES]
-                   + [interval_text(r.difference, r.fmt, r.n_samples, sign=True),
+                   + [interval_text(r.difference, r.fmt, r.n_samples, "not measurable", sign=True),
                       significance_text(r.difference)])
     return HEADER, out
 
@@ -158,6 +174,9 @@ def to_markdown(rows, names):
     header, cells = build_table(rows)
     lines = [preamble(names), "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(c.replace("|", "/") for c in row) + " |" for row in cells]
+    missing = missing_notes(rows, names)
+    if missing:
+        lines += ["", "Left out of a mean (n = k of N):"] + [f"- {m}" for m in missing]
     return "\n".join(lines) + "\n"
 
 

@@ -96,7 +96,8 @@ class ReplicateReport(unittest.TestCase):
     def test_not_measurable_cells(self):
         row = self.rows["f0 at the end [N]"]
         self.assertEqual((row["rigid_n"], row["significant"]), ("0", ""))
-        self.assertIn("| f0 at the end [N] | not measurable (no f0 column) |", self.proc.stdout)
+        self.assertIn("| f0 at the end [N] | not measurable (no f0 column) (all 4 samples) |",
+                      self.proc.stdout)
 
     def test_markdown_cells(self):
         mean, half = expected(PHI["rigid"])
@@ -136,7 +137,11 @@ class MissingAndSingle(unittest.TestCase):
         self.assertEqual(row.difference.n, 2)
         text = replicates.interval_text(row.per_case["membrane"], row.fmt, 3,
                                         row.reason("membrane"))
-        self.assertIn("(n = 2 of 3; not measurable (s1/s3 still rising))", text)
+        self.assertTrue(text.endswith(" (n = 2 of 3)"), text)
+        self.assertEqual(replicates.missing_notes([row], ["s1", "s2", "s3"]),
+                         ["peak s1/s3, membrane, s2: not measurable (s1/s3 still rising)"])
+        self.assertIn("Left out of a mean (n = k of N):\n- peak s1/s3, membrane, s2: ",
+                      replicates.to_markdown([row], ["s1", "s2", "s3"]))
 
     def test_one_sample(self):
         row = self.row([2.8], [2.72])
