@@ -258,8 +258,9 @@ def stress_strain_band(samples, path, cases=("rigid", "membrane")):
         for ax, column, scale in ((ax1, "s1/s3", 1.0), (ax2, "ev", 100.0)):
             grid, mean, half, n, each = replicate_curves(samples, case, column, scale)
             drawn[(case, column)] = (grid, mean, half, n)
-            for x, y in each:
-                ax.plot(x, y, color=c, lw=0.5, alpha=0.35)
+            for k, (x, y) in enumerate(each):
+                ax.plot(x, y, color=c, lw=0.5, alpha=0.35,
+                        label=f"{case}, each sample" if k == 0 else None)
             label = f"{case}, mean of {n.max()}"
             if np.isfinite(half).any():
                 ax.fill_between(grid, mean - half, mean + half, color=c, alpha=0.25, lw=0,
@@ -268,12 +269,10 @@ def stress_strain_band(samples, path, cases=("rigid", "membrane")):
     ax1.set_ylabel(r"$\sigma_1/\sigma_3$")
     ax2.set_ylabel(r"$\varepsilon_v$ [%] (contraction > 0)")
     ax2.set_xlabel(r"$\varepsilon_{11}$ [%]")
-    ax1.text(0.02, 0.97, "thin lines: each sample", transform=ax1.transAxes, fontsize=7,
-             va="top", color="0.3")
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-        if ax.get_legend_handles_labels()[0]:
-            ax.legend(fontsize=8)
+    if ax1.get_legend_handles_labels()[0]:          # one legend: the same lines below
+        ax1.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)
