@@ -117,7 +117,11 @@ def interval_text(iv, fmt, n_samples, reason=None, sign=False):
     reasons: missing_notes); with no value the first sample's reason."""
     if iv.n == 0:
         text = reason or "not measurable"
-        return text + (f" (all {n_samples} samples)" if n_samples > 1 else "")
+        if n_samples > 1:
+            first = text[len("not measurable "):] if text.startswith("not measurable (") else ""
+            text = f"not measurable in any of the {n_samples} samples" + (
+                f" (the first: {first[1:-1]})" if first else "")
+        return text
     text = _number(iv.mean, fmt, sign)
     if iv.has_interval:
         text += " ± " + _number(iv.half_width, fmt)

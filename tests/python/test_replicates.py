@@ -96,8 +96,8 @@ class ReplicateReport(unittest.TestCase):
     def test_not_measurable_cells(self):
         row = self.rows["f0 at the end [N]"]
         self.assertEqual((row["rigid_n"], row["significant"]), ("0", ""))
-        self.assertIn("| f0 at the end [N] | not measurable (no f0 column) (all 4 samples) |",
-                      self.proc.stdout)
+        self.assertIn("| f0 at the end [N] | not measurable in any of the 4 samples "
+                      "(the first: no f0 column) |", self.proc.stdout)
 
     def test_markdown_cells(self):
         mean, half = expected(PHI["rigid"])
