@@ -5,7 +5,9 @@ Modules:
     curves   -- macro quantities from the stress-strain table (peak, E, nu, phi, psi)
     field    -- incremental displacement / shear-strain field and shear-band detection
     rose     -- polar histograms and the fitted E(theta), f_n(theta) curves
-    plots    -- the PNG figures
+    plots    -- the PNG figures (stress_strain_band: mean over samples with its 95 % band)
+    stats    -- Student-t quantile, 95 % intervals of a mean and of a paired difference
+    replicates -- the table over replicate samples (mean ± interval, paired differences)
     summary  -- the rigid-vs-membrane table (Markdown and CSV)
 
 Everything reported is computed from a run's files; what cannot be measured is

@@ -12,7 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from . import rose  # noqa: E402
+from . import rose, stats  # noqa: E402
 from .curves import measured  # noqa: E402
 
 COLOURS = {"rigid": "C0", "membrane": "C3"}
@@ -232,3 +232,48 @@ def field(run, path, max_arrows=2500):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def replicate_curves(samples, case, column, scale=1.0):
+    """(grid [%], mean, half-width, n, the samples' (x [%], y)) of one column of one case
+    over the samples, on the strain grid all of them cover (stats.common_grid)."""
+    tables = [s[case].table for s in samples if case in s]
+    xs = [100 * t["ea"] for t in tables]
+    ys = [scale * t[column] for t in tables]
+    grid = stats.common_grid(xs)
+    mean, half, n = stats.mean_band(xs, ys, grid)
+    return grid, mean, half, n, list(zip(xs, ys))
+
+
+def stress_strain_band(samples, path, cases=("rigid", "membrane")):
+    """sigma1/sigma3 and eps_v against eps_11: the mean over the samples (thick line),
+    its 95 % interval (band, when n >= 2) and each sample (thin lines). Returns what
+    was drawn: {(case, column): (grid, mean, half, n)}."""
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6.5, 7), sharex=True)
+    drawn = {}
+    for case in cases:
+        if not any(case in s for s in samples):
+            continue
+        c = COLOURS.get(case, "C2")
+        for ax, column, scale in ((ax1, "s1/s3", 1.0), (ax2, "ev", 100.0)):
+            grid, mean, half, n, each = replicate_curves(samples, case, column, scale)
+            drawn[(case, column)] = (grid, mean, half, n)
+            for k, (x, y) in enumerate(each):
+                ax.plot(x, y, color=c, lw=0.5, alpha=0.35,
+                        label=f"{case}, each sample" if k == 0 else None)
+            label = f"{case}, mean of {n.max()}"
+            if np.isfinite(half).any():
+                ax.fill_between(grid, mean - half, mean + half, color=c, alpha=0.25, lw=0,
+                                label=f"{case}, {100 * stats.CONFIDENCE:.0f} % interval of the mean")
+            ax.plot(grid, mean, color=c, lw=1.8, label=label)
+    ax1.set_ylabel(r"$\sigma_1/\sigma_3$")
+    ax2.set_ylabel(r"$\varepsilon_v$ [%] (contraction > 0)")
+    ax2.set_xlabel(r"$\varepsilon_{11}$ [%]")
+    for ax in (ax1, ax2):
+        ax.grid(alpha=0.3)
+    if ax1.get_legend_handles_labels()[0]:          # one legend: the same lines below
+        ax1.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return drawn
