@@ -4,6 +4,11 @@ sheared to 1 % axial strain with rigid walls and with fix membrane2d, on NP
 ranks. Checks physical sanity that a broken example would fail:
 
 - preparation reaches porosity 0.12 when grown and holds 100 kPa on the walls;
+  the prepared sample meets the targets a quarter-size sample can meet
+  (examples/biaxial/README.md): all four wall stresses within 1 % of 100 kPa,
+  C_n >= 3.1 (rattlers included; 2.35 with the old procedure), rattlers
+  <= 18 % (26 % before), and no wall stress fell below 0.9 sigma_3 during the
+  consolidation (the printed minimum);
 - no atom is lost in either shear run (thermo_modify lost error, and the count);
 - the confining stress is held: rigid sigma_3 within 10 % of 100 kPa on every
   line after the first; membrane: the applied pressure is 100 kPa and the
@@ -19,6 +24,7 @@ ranks. Checks physical sanity that a broken example would fail:
     biaxial_small.py EXE NP
 """
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -35,6 +41,19 @@ def run(cmd, log):
             sys.exit("FAIL: %s exited %d\n%s" % (" ".join(cmd[:8]), p.returncode, f.read()[-3000:]))
     with open(log) as f:
         return f.read()
+
+
+def fields(line):
+    """'key value' pairs of a PREPARED line: the number after each key."""
+    num = r"([-+0-9.eE]+)"
+    keys = {"cn": r"C_n \(fabric\) ", "zm": r"Z_m ", "rat": r"rattlers ", "lam_out": r"lambda_out ",
+            "lam_in": r"lambda_in ", "R": r" R ", "minwall": r"min_wall/sigma "}
+    out = {}
+    for k, pat in keys.items():
+        m = re.search(pat + num, line)
+        if m:
+            out[k] = float(m.group(1))
+    return out
 
 
 def table(path):
@@ -74,6 +93,18 @@ def main():
             w = prepared[0].split()
             por = float(w[4].rstrip(","))
             check(abs(por - 0.12) < 1e-6, "porosity after growth %.6f = 0.12" % por)
+            f = fields(prepared[0])
+            check(len(f) == 7, "PREPARED line has C_n, Z_m, rattlers, lambda in/out, R, min wall stress (%s)" % f)
+            if len(f) == 7:
+                check(f["cn"] >= 3.1, "prepared C_n %.3f >= 3.1 (rattlers included)" % f["cn"])
+                check(f["rat"] <= 0.18, "prepared rattler fraction %.3f <= 0.18" % f["rat"])
+                check(f["minwall"] >= 0.9, "min wall stress during consolidation %.3f sigma_3 >= 0.9" % f["minwall"])
+                check(f["R"] < 1e-3, "unbalanced force ratio %.2e < 1e-3" % f["R"])
+                check(f["zm"] > f["cn"] and f["lam_in"] > f["lam_out"], "Z_m > C_n and lambda with rattlers > without")
+        walls = [l for l in out.splitlines() if l.startswith("PREPARED walls")]
+        st = [float(x) for x in walls[0].split("stresses l r b t")[1].split()[:4]] if walls else []
+        check(len(st) == 4 and all(abs(x / 1e5 - 1) < 0.01 for x in st),
+              "prepared wall stresses l r b t %s within 1 %% of 100 kPa" % " ".join("%.0f" % x for x in st))
 
         runs = {}
         for case in ("rigid", "membrane"):
