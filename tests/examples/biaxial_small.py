@@ -9,6 +9,7 @@ ranks. Checks physical sanity that a broken example would fail:
   C_n >= 3.1 (rattlers included; 2.35 with the old procedure), rattlers
   <= 18 % (26 % before), and no wall stress fell below 0.9 sigma_3 during the
   consolidation (the printed minimum);
+- both shear scripts start from the same holding phase (a START line each);
 - no atom is lost in either shear run (thermo_modify lost error, and the count);
 - the confining stress is held: rigid sigma_3 within 10 % of 100 kPa on every
   line after the first; membrane: the applied pressure is 100 kPa and the
@@ -114,6 +115,8 @@ def main():
                              "-log", "none"], os.path.join(work, "%s.txt" % case))
             runs[case] = t = table(table_path)
             check_quiet_guards(out, case)
+            start = [l for l in out.splitlines() if l.startswith("START of shear")]
+            check(len(start) == 1, "%s: holding phase done (%s)" % (case, start[0][:120] if start else "no START line"))
             check(len(t["ea"]) > 5 and t["ea"][-1] > 0.0099, "%s: reached 1 %% axial strain" % case)
             atoms = [l for l in out.splitlines() if "Loop time" in l]
             check(bool(atoms) and all("with 526 atoms" in l for l in atoms), "%s: no atom lost (526 atoms)" % case)
