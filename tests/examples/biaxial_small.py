@@ -4,6 +4,15 @@ sheared to 1 % axial strain with rigid walls and with fix membrane2d, on NP
 ranks. Checks physical sanity that a broken example would fail:
 
 - preparation reaches porosity 0.12 when grown and holds 100 kPa on the walls;
+  the prepared sample meets the targets a quarter-size sample can meet
+  (examples/biaxial/README.md): all four wall stresses within 1 % of 100 kPa,
+  C_n >= 3.1 (rattlers included; 2.35 with the old procedure), rattlers
+  <= 18 % (26 % before), and no wall stress fell below 0.9 sigma_3 during the
+  consolidation (the printed minimum);
+- both shear scripts start from the same holding phase (a START line each);
+- the platen speed ramp: after it, sigma_1 from the platens and the Love-Weber
+  sigma_yy with the wall contacts agree within 2 % (mean of the OUT.ramp lines
+  after the ramp, against the difference at rest: 0 for rigid walls);
 - no atom is lost in either shear run (thermo_modify lost error, and the count);
 - the confining stress is held: rigid sigma_3 within 10 % of 100 kPa on every
   line after the first; membrane: the applied pressure is 100 kPa and the
@@ -19,6 +28,7 @@ ranks. Checks physical sanity that a broken example would fail:
     biaxial_small.py EXE NP
 """
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -35,6 +45,19 @@ def run(cmd, log):
             sys.exit("FAIL: %s exited %d\n%s" % (" ".join(cmd[:8]), p.returncode, f.read()[-3000:]))
     with open(log) as f:
         return f.read()
+
+
+def fields(line):
+    """'key value' pairs of a PREPARED line: the number after each key."""
+    num = r"([-+0-9.eE]+)"
+    keys = {"cn": r"C_n \(fabric\) ", "zm": r"Z_m ", "rat": r"rattlers ", "lam_out": r"lambda_out ",
+            "lam_in": r"lambda_in ", "R": r" R ", "minwall": r"min_wall/sigma "}
+    out = {}
+    for k, pat in keys.items():
+        m = re.search(pat + num, line)
+        if m:
+            out[k] = float(m.group(1))
+    return out
 
 
 def table(path):
@@ -74,6 +97,18 @@ def main():
             w = prepared[0].split()
             por = float(w[4].rstrip(","))
             check(abs(por - 0.12) < 1e-6, "porosity after growth %.6f = 0.12" % por)
+            f = fields(prepared[0])
+            check(len(f) == 7, "PREPARED line has C_n, Z_m, rattlers, lambda in/out, R, min wall stress (%s)" % f)
+            if len(f) == 7:
+                check(f["cn"] >= 3.1, "prepared C_n %.3f >= 3.1 (rattlers included)" % f["cn"])
+                check(f["rat"] <= 0.18, "prepared rattler fraction %.3f <= 0.18" % f["rat"])
+                check(f["minwall"] >= 0.9, "min wall stress during consolidation %.3f sigma_3 >= 0.9" % f["minwall"])
+                check(f["R"] < 1e-3, "unbalanced force ratio %.2e < 1e-3" % f["R"])
+                check(f["zm"] > f["cn"] and f["lam_in"] > f["lam_out"], "Z_m > C_n and lambda with rattlers > without")
+        walls = [l for l in out.splitlines() if l.startswith("PREPARED walls")]
+        st = [float(x) for x in walls[0].split("stresses l r b t")[1].split()[:4]] if walls else []
+        check(len(st) == 4 and all(abs(x / 1e5 - 1) < 0.01 for x in st),
+              "prepared wall stresses l r b t %s within 1 %% of 100 kPa" % " ".join("%.0f" % x for x in st))
 
         runs = {}
         for case in ("rigid", "membrane"):
@@ -83,6 +118,24 @@ def main():
                              "-log", "none"], os.path.join(work, "%s.txt" % case))
             runs[case] = t = table(table_path)
             check_quiet_guards(out, case)
+            start = [l for l in out.splitlines() if l.startswith("START of shear")]
+            check(len(start) == 1, "%s: holding phase done (%s)" % (case, start[0][:120] if start else "no START line"))
+            # the platen speed ramp: after it, the platen stress and the Love-Weber sigma_yy
+            # with the wall contacts agree as well as at rest (first line, before the platens
+            # move: exactly for rigid walls; the membrane case has a static offset, the
+            # vertical part of the membrane forces on the chain disks, -5 % on this sample)
+            ramp = table(table_path + ".ramp")
+            with open(table_path + ".ramp") as fr:
+                t_end = float(fr.readline().split("ends at t =")[1].split()[0])
+            dev0 = ramp["s1/syy_w-1"][0]
+            after = [d for t_, d in zip(ramp["t"], ramp["s1/syy_w-1"]) if t_ > t_end]
+            mean_dev = sum(after) / max(len(after), 1)
+            if case == "rigid":
+                check(abs(dev0) < 0.005, "rigid: at rest sigma_1 = Love-Weber sigma_yy with the wall contacts (%+.4f)" % dev0)
+            check(len(after) > 3 and abs(mean_dev - dev0) < 0.02,
+                  "%s: after the platen ramp (t > %.3f s) sigma_1 / Love-Weber sigma_yy - 1 = %+.4f on average, "
+                  "%+.4f at rest (difference < 0.02; worst line %+.4f)"
+                  % (case, t_end, mean_dev, dev0, max(after, key=abs) if after else float("nan")))
             check(len(t["ea"]) > 5 and t["ea"][-1] > 0.0099, "%s: reached 1 %% axial strain" % case)
             atoms = [l for l in out.splitlines() if "Loop time" in l]
             check(bool(atoms) and all("with 526 atoms" in l for l in atoms), "%s: no atom lost (526 atoms)" % case)
