@@ -9,6 +9,10 @@ ranks. Checks physical sanity that a broken example would fail:
   C_n >= 3.1 (rattlers included; 2.35 with the old procedure), rattlers
   <= 18 % (26 % before), and no wall stress fell below 0.9 sigma_3 during the
   consolidation (the printed minimum);
+- both shear scripts start from the same holding phase (a START line each);
+- the platen speed ramp: after it, sigma_1 from the platens and the Love-Weber
+  sigma_yy with the wall contacts agree within 2 % (mean of the OUT.ramp lines
+  after the ramp, against the difference at rest: 0 for rigid walls);
 - no atom is lost in either shear run (thermo_modify lost error, and the count);
 - the confining stress is held: rigid sigma_3 within 10 % of 100 kPa on every
   line after the first; membrane: the applied pressure is 100 kPa and the
@@ -114,6 +118,24 @@ def main():
                              "-log", "none"], os.path.join(work, "%s.txt" % case))
             runs[case] = t = table(table_path)
             check_quiet_guards(out, case)
+            start = [l for l in out.splitlines() if l.startswith("START of shear")]
+            check(len(start) == 1, "%s: holding phase done (%s)" % (case, start[0][:120] if start else "no START line"))
+            # the platen speed ramp: after it, the platen stress and the Love-Weber sigma_yy
+            # with the wall contacts agree as well as at rest (first line, before the platens
+            # move: exactly for rigid walls; the membrane case has a static offset, the
+            # vertical part of the membrane forces on the chain disks, -5 % on this sample)
+            ramp = table(table_path + ".ramp")
+            with open(table_path + ".ramp") as fr:
+                t_end = float(fr.readline().split("ends at t =")[1].split()[0])
+            dev0 = ramp["s1/syy_w-1"][0]
+            after = [d for t_, d in zip(ramp["t"], ramp["s1/syy_w-1"]) if t_ > t_end]
+            mean_dev = sum(after) / max(len(after), 1)
+            if case == "rigid":
+                check(abs(dev0) < 0.005, "rigid: at rest sigma_1 = Love-Weber sigma_yy with the wall contacts (%+.4f)" % dev0)
+            check(len(after) > 3 and abs(mean_dev - dev0) < 0.02,
+                  "%s: after the platen ramp (t > %.3f s) sigma_1 / Love-Weber sigma_yy - 1 = %+.4f on average, "
+                  "%+.4f at rest (difference < 0.02; worst line %+.4f)"
+                  % (case, t_end, mean_dev, dev0, max(after, key=abs) if after else float("nan")))
             check(len(t["ea"]) > 5 and t["ea"][-1] > 0.0099, "%s: reached 1 %% axial strain" % case)
             atoms = [l for l in out.splitlines() if "Loop time" in l]
             check(bool(atoms) and all("with 526 atoms" in l for l in atoms), "%s: no atom lost (526 atoms)" % case)
