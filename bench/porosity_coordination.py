@@ -11,8 +11,8 @@ rattler fraction, as mean and range over the seeds.
     /usr/bin/python3 bench/porosity_coordination.py [--scale 0.25] [--seeds 1 2 3]
         [--porosities 0.10 0.12 0.14 0.16] [--jobs 2]
 
-Writes bench/porosity_coordination.csv and .md (runs are kept under
-out/porosity_coordination/ and reused).
+Writes bench/porosity_coordination_scale<scale>.csv and .md (runs are kept
+under out/porosity_coordination/ and reused).
 """
 import argparse
 import concurrent.futures as cf
@@ -96,7 +96,8 @@ def main():
     rows = []
     for (n0, seed), (values, took) in results.items():
         rows.append(dict(n0=n0, seed=seed, seconds=round(took, 1), **values))
-    with open(os.path.join(HERE, "porosity_coordination.csv"), "w", newline="") as f:
+    stem = os.path.join(HERE, "porosity_coordination_scale%g" % args.scale)
+    with open(stem + ".csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
@@ -116,7 +117,7 @@ def main():
             v = [r[key] for r in rows if r["n0"] == n0]
             cells.append("%.3f [%.3f, %.3f]" % (sum(v) / len(v), min(v), max(v)))
         md.append("| %g | %s |" % (n0, " | ".join(cells)))
-    with open(os.path.join(HERE, "porosity_coordination.md"), "w") as f:
+    with open(stem + ".md", "w") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md))
 
