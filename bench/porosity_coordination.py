@@ -108,6 +108,8 @@ def main():
                                   " ".join("%g" % n for n in args.porosities)),
           "Each cell: mean [min, max] over %d seeds (examples/biaxial/in.prepare, 1 rank; "
           "this invocation took %.1f min).\n" % (len(args.seeds), (time.time() - t0) / 60.0),
+          "A minimum wall stress of 0 means the grown packing carried no load (too loose to "
+          "jam at that porosity): the consolidation then starts from zero stress.\n",
           "| growth porosity n0 | porosity at 100 kPa | C_n (rattlers in) | Z_m (rattlers out) "
           "| rattler fraction | min wall stress / σ3 |",
           "|---|---|---|---|---|---|"]
