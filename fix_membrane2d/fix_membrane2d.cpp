@@ -145,7 +145,9 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
       polyline_file = new char[file.size() + 1];
       strcpy(polyline_file, file.c_str());
     } else {
-      args.unknown("pressure, ylo, yhi, sides, band, tolerance, thickness, every, frictionless, polyline");
+      std::string keywords;
+      for (const char *k : KEYWORDS) keywords += (keywords.empty() ? "" : ", ") + std::string(k);
+      args.unknown(keywords);
     }
   }
   if (!have_pressure) args.required("pressure", usage_pressure);
@@ -235,7 +237,7 @@ void FixMembrane2d::init()
   if (band_width <= 0.0) band_width = 4.0 * d50;
   if (search_width <= 0.0) search_width = band_width;   // a widened band is kept (detect_chains)
   if (tolerance < 0.0) tolerance = 0.02 * d50;
-  check_tolerance();
+  check_lengths();
   // chain disks are pushed by the membrane on top of their contacts: an
   // unstable chain shows first as escapes
   check_time_step(lmp, groupbit, world, msg(""), TIME_STEP_LIMIT, warned_dt);
@@ -265,11 +267,12 @@ void FixMembrane2d::check_other_membranes()
 }
 
 /* ----------------------------------------------------------------------
-   the tolerance is a length: a value meant as a fraction of D50 (0.02)
-   bridges gaps of several disks and shortens the chain
+   band and tolerance are lengths: a tolerance meant as a fraction of D50
+   (0.02) bridges gaps of several disks and shortens the chain; a band far
+   below D50 is cut into more slices than the band code allows
 ------------------------------------------------------------------------- */
 
-void FixMembrane2d::check_tolerance()
+void FixMembrane2d::check_lengths()
 {
   if (band_width < BAND_MIN * d50)
     error->all(FLERR, keyword_message(msg(""), "band", number_text(band_width),
@@ -398,20 +401,20 @@ void FixMembrane2d::setup(int vflag)
 void FixMembrane2d::pre_force(int)
 {
   evaluate_platens();
-  const bool scheduled = force_detection || (detect_every > 0 && update->ntimestep % detect_every == 0);
-  if (!scheduled) {
+  bool detect = force_detection || (detect_every > 0 && update->ntimestep % detect_every == 0);
+  if (!detect) {
     gather_watched();
-    if (detect_every > 0 || !chains_may_have_changed()) {
-      if (!types_applied) apply_types();
-      return;
-    }
+    detect = detect_every == 0 && chains_may_have_changed();
   }
-  force_detection = false;   // detect_chains() sets it again after widening the band
-  detect_chains();
-  ylo_detected = ylo;
-  yhi_detected = yhi;
-  build_watch_list();
-  gather_watched();   // the new chain's positions and speeds
+  if (detect) {
+    force_detection = false;   // detect_chains() sets it again after widening the band
+    detect_chains();
+    ylo_detected = ylo;
+    yhi_detected = yhi;
+    build_watch_list();
+    gather_watched();   // the new chain's positions and speeds
+  }
+  // after a run or a restart write the chain disks wear their own types
   if (!types_applied) apply_types();
 }
 

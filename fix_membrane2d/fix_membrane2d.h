@@ -146,7 +146,7 @@ class FixMembrane2d : public Fix {
 
   void evaluate_platens();
   void check_other_membranes();
-  void check_tolerance();
+  void check_lengths();
   std::uint64_t group_checksum();
   void forget_state();
   void apply_types();
