@@ -17,8 +17,8 @@
 # Each sample keeps its files in out/biaxial/scale<scale>_seed<seed>/ (and its own
 # report); out/biaxial/prepared.restart and .walls link to the first sample's, for
 # bench/. A re-run reuses a sample's preparation and each of its shears when they
-# finished with the same scale, seed and rank count (and rate and strain, for a
-# shear): stamps prepare.key and shear_<case>.key in the folder.
+# finished with the same scale, seed, rank count and scripts (and rate and strain, for
+# a shear): stamps prepare.key and shear_<case>.key in the folder.
 set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
@@ -48,13 +48,15 @@ cd examples/biaxial
 mpi=(mpirun --allow-run-as-root --oversubscribe -np "$np")
 t0=$(date +%s)
 
+script_hash() { cat "$@" | sha1sum | cut -c1-12; }   # a changed script invalidates its results
+
 dirs=()
 for k in $(seq 1 "$samples"); do
   s=$(( seed + 1000 * (k - 1) ))
   dir=$out/scale${scale}_seed$s
   dirs+=("$dir")
   mkdir -p "$dir"
-  prep_key="scale $scale seed $s np $np"
+  prep_key="scale $scale seed $s np $np scripts $(script_hash in.prepare "$root/scripts/generate_sample.py")"
   if [ "$(cat "$dir/prepare.key" 2>/dev/null)" = "$prep_key" ] \
       && grep -qE "^PREPARED porosity" "$dir/screen.prepare" 2>/dev/null; then
     echo "== sample $k of $samples: scale $scale, seed $s: prepared before, reused"
@@ -72,7 +74,7 @@ for k in $(seq 1 "$samples"); do
   fi
 
   for case in rigid membrane; do
-    shear_key="$prep_key rate $rate strain $strain"
+    shear_key="$prep_key rate $rate strain $strain scripts $(script_hash in.shear_$case damping.inc)"
     if [ "$(cat "$dir/shear_$case.key" 2>/dev/null)" = "$shear_key" ] \
         && grep -qE "^SHEAR done" "$dir/screen.shear_$case" 2>/dev/null; then
       echo "== shear, $case, seed $s: done before, reused"

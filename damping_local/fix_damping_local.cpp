@@ -12,6 +12,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "memory.h"
 #include "modify.h"
 #include "update.h"
 
@@ -53,8 +54,12 @@ bool adds_no_force(const char *style)
 
 FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
   Fix(lammps, narg, arg),
-  alpha(0.0), damp_torque(true)
+  alpha(0.0), damp_torque(true), nmax(0), damping_force(nullptr)
 {
+  peratom_flag = 1;           // the damping force F_d of the step, per atom
+  size_peratom_cols = 3;
+  peratom_freq = 1;
+
   // without rotational degrees of freedom the default 'torque yes' has nothing to do
   const bool has_rotation = atom->torque_flag && atom->omega_flag;
   bool have_alpha = false, torque_given = false;
@@ -79,6 +84,13 @@ FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
   }
   if (!have_alpha) args.required("alpha", ALPHA_USAGE);
   if (!torque_given && !has_rotation) damp_torque = false;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixDampingLocal::~FixDampingLocal()
+{
+  memory->destroy(damping_force);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -152,12 +164,31 @@ void FixDampingLocal::post_force(int)
   int *mask = atom->mask;
   const int nlocal = atom->nlocal;
 
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) damping::apply_local_damping(f[i], v[i], 3, alpha);
+  // refilled every step for the atoms owned now: output reads it before they migrate
+  if (nlocal > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(damping_force);
+    memory->create(damping_force, nmax, 3, "damping/local:damping_force");
+    array_atom = damping_force;
+  }
+  for (int i = 0; i < nlocal; i++) {
+    double *fd = damping_force[i];
+    fd[0] = fd[1] = fd[2] = 0.0;
+    if (!(mask[i] & groupbit)) continue;
+    damping::local_damping_force(f[i], v[i], 3, alpha, fd);
+    for (int k = 0; k < 3; k++) f[i][k] += fd[k];
+  }
 
   if (!damp_torque) return;
   double **torque = atom->torque;
   double **omega = atom->omega;
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit) damping::apply_local_damping(torque[i], omega[i], 3, alpha);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixDampingLocal::memory_usage()
+{
+  return 3.0 * nmax * sizeof(double);
 }

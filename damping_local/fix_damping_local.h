@@ -8,7 +8,9 @@
    It damps the force as it stands when its post_force runs: LIGGGHTS calls
    post_force in the order the fixes were defined, so define this fix after
    every fix that adds forces (addforce, gravity, wall/gran, membrane2d, ...).
-   Maths in local_damping.h (no LIGGGHTS).
+   Maths in local_damping.h (no LIGGGHTS). The damping force of the step
+   is kept per atom (an N x 3 array) for output, e.g. its moment about the
+   sample centre: the bias it puts on a boundary stress.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -30,14 +32,18 @@ namespace LAMMPS_NS {
 class FixDampingLocal : public Fix {
  public:
   FixDampingLocal(class LAMMPS *, int, char **);
+  ~FixDampingLocal();
   int setmask();
   void init();
   void setup(int);
   void post_force(int);
+  double memory_usage();
 
  private:
   double alpha;
   bool damp_torque;
+  int nmax;                             // rows allocated in damping_force
+  double **damping_force;               // F_d of the last step, owned atoms (0 outside the group)
   std::set<std::string> warned_order;   // fixes warned about (once each) for their order
 };
 
