@@ -102,6 +102,30 @@ def elastic_constants(ea, s1, s3, el, peak_index, fraction=0.3, min_points=4):
     return E, nu, (float(ea[idx[0]]), float(ea[idx[-1]]), len(idx), fraction)
 
 
+def half_rise_strain(ea, q, peak_index):
+    """eps_11 at which q - q0 first reaches half its peak rise (linear interpolation
+    between output lines): the end of the secant window of E50."""
+    if not measured(peak_index):
+        return NotMeasurable("no peak: no 50 % point")
+    rise = q - q[0]
+    half = 0.5 * rise[peak_index]
+    k = int(np.nonzero(rise[: peak_index + 1] >= half)[0][0])
+    if k == 0 or half <= 0:
+        return NotMeasurable("q at its half rise on the first line")
+    t = (half - rise[k - 1]) / (rise[k] - rise[k - 1])
+    return float(ea[k - 1] + t * (ea[k] - ea[k - 1]))
+
+
+def secant_constants(ea, q, el, ea50):
+    """(E50 [Pa], nu50) of the secant from the first line to eps_11 = ea50:
+    E50 = (q(ea50) - q0) / (ea50 - ea0), nu50 = -(el(ea50) - el0) / (ea50 - ea0)."""
+    if not measured(ea50):
+        return ea50, ea50
+    d = ea50 - ea[0]
+    return (float(np.interp(ea50, ea, q) - q[0]) / d,
+            -float(np.interp(ea50, ea, el) - el[0]) / d)
+
+
 def sliding_slopes(x, y, width):
     """Slope of y(x) by a least-squares line over every window [x_i, x_i + width]
     (only windows fully inside the data); returns (window centres, slopes)."""
@@ -146,6 +170,19 @@ def analyse_curves(table, elastic_fraction=0.3, dilatancy_window=0.01):
     res["ea_end"] = float(ea[-1])
     E, nu, window = elastic_constants(ea, s1, s3, table["el"], peak, elastic_fraction)
     res["E"], res["nu"], res["elastic_window"] = E, nu, window
+    # the same moduli from the stress inside (Love-Weber over the sample, no wall contacts)
+    if table.has("syy_lw") and window is not None:
+        E_lw, _, _ = elastic_constants(ea, table["syy_lw"], table["sxx_lw"], table["el"], peak, elastic_fraction)
+        res["E_lw"] = E_lw
+    else:
+        res["E_lw"] = NotMeasurable("no Love-Weber columns" if window is None else "no syy_lw column")
+    q = s1 - s3
+    res["ea50"] = half_rise_strain(ea, q, peak)
+    res["E50"], res["nu50"] = secant_constants(ea, q, table["el"], res["ea50"])
+    if table.has("syy_lw"):
+        res["E50_lw"], _ = secant_constants(ea, table["syy_lw"] - table["sxx_lw"], table["el"], res["ea50"])
+    else:
+        res["E50_lw"] = NotMeasurable("no syy_lw column")
     psi, ea_psi, rate = max_dilatancy(ea, table["ev"], dilatancy_window)
     res["psi"], res["ea_psi"], res["dilatancy_rate"] = psi, ea_psi, rate
     res["dilatancy_window"] = dilatancy_window

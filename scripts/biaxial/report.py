@@ -3,7 +3,7 @@ import os
 
 import numpy as np
 
-from . import curves, field, readers
+from . import curves, field, particle_strain, readers
 from .curves import NotMeasurable, measured
 
 
@@ -65,6 +65,7 @@ def load_run(name, prefix, d50_default):
     else:
         run.notes.append(f"no {os.path.basename(prefix)}.rose: no rose diagrams")
     run.d50, run.d50_source = d50_default, "--d50 (no dump)"
+    run.curves["E50_p"] = run.curves["nu50_p"] = NotMeasurable("no dump file")
     if not os.path.exists(prefix + ".dump"):
         run.band_reason = NotMeasurable("no dump file")
         run.notes.append(f"no {os.path.basename(prefix)}.dump: no displacement field")
@@ -84,6 +85,8 @@ def load_run(name, prefix, d50_default):
     run.d50 = field.d50_by_mass(first["radius"][field.soil_mask(first)])
     run.d50_source = "by mass, from the first dump frame"
     plan, ea = choose_increments(run.table, run.curves["peak_index"], index)
+    run.curves["E50_p"], run.curves["nu50_p"] = particle_strain.particle_secant(
+        run.table, run.curves, frame, ea, run.d50)
     for label, i, j, in_table in plan:
         inc = {"label": label, "ea": (float(ea[i]), float(ea[j])),
                "field": field.analyse_increment(frame(i), frame(j), run.d50)}
