@@ -5,6 +5,12 @@
 #
 #   ./run.sh                 published size (75 x 150 mm, 8 404 disks), 10 % axial strain
 #   ./run.sh --quick         a quarter-size sample (526 disks), 2 % strain: about a minute
+#   ./run.sh --scale S       linear scale of the published sample (0.25: 526 disks, 0.5: 2 100)
+#   ./run.sh --paper         the published procedure as closely as LIGGGHTS allows (doc/paper_preset.md):
+#                            2 %/min, PFC local damping alpha 0.7, side-wall servo without
+#                            feed-forward; writes restart files and resumes an interrupted
+#                            shear from the latest; results in out/paper/ (about an hour
+#                            per case at full size on 2 cores: try --paper --scale 0.25)
 #   ./run.sh --np N          MPI ranks (default: the number of cores)
 #   ./run.sh --rate R        axial strain rate [1/s] (default 0.0025: the fastest within the
 #                            sample scatter for the membrane, bench/accuracy_sweep.md)
@@ -23,11 +29,13 @@ set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
 
-scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1
+scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1; paper=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) scale=0.25; strain=0.02 ;;
     --full) scale=1 ;;
+    --scale) scale=$2; shift ;;
+    --paper) paper=1 ;;
     --np) np=$2; shift ;;
     --rate) rate=$2; shift ;;
     --strain) strain=$2; shift ;;
@@ -43,6 +51,13 @@ tools/install-deps.sh
 tools/build.sh >/dev/null
 exe=$root/build/app/liggghts-membrane
 out=$root/out/biaxial
+shear_vars=(); restartevery=0
+if [ "$paper" = 1 ]; then
+  rate=$(/usr/bin/python3 -c "print(0.02 / 60)")      # 2 %/min
+  out=$root/out/paper
+  restartevery=50000                                  # 5 s of loading, 0.17 % strain
+  shear_vars=(-var damping 1 -var adamp 0.7 -var feedforward 0 -var restartevery $restartevery)
+fi
 mkdir -p "$out"
 cd examples/biaxial
 mpi=(mpirun --allow-run-as-root --oversubscribe -np "$np")
@@ -74,7 +89,7 @@ for k in $(seq 1 "$samples"); do
   fi
 
   for case in rigid membrane; do
-    shear_key="$prep_key rate $rate strain $strain scripts $(script_hash in.shear_$case damping.inc)"
+    shear_key="$prep_key rate $rate strain $strain ${shear_vars[*]} scripts $(script_hash in.shear_$case damping.inc)"
     if [ "$(cat "$dir/shear_$case.key" 2>/dev/null)" = "$shear_key" ] \
         && grep -qE "^SHEAR done" "$dir/screen.shear_$case" 2>/dev/null; then
       echo "== shear, $case, seed $s: done before, reused"
@@ -82,14 +97,34 @@ for k in $(seq 1 "$samples"); do
     fi
     echo "== shear, $case, seed $s: rate $rate 1/s to axial strain $strain on $np ranks"
     rm -f "$dir/shear_$case.key"
-    "${mpi[@]}" "$exe" -in in.shear_$case -var restart "$dir/prepared.restart" -var rate "$rate" \
-        -var eatarget "$strain" -var out "$dir/shear_$case.txt" -log "$dir/log.shear_$case" \
-        > "$dir/screen.shear_$case" &
+    o=$dir/shear_$case.txt
+    run_vars=(-var restart "$dir/prepared.restart" -var out "$o")
+    writing=$o
+    if [ "$restartevery" -gt 0 ]; then        # resume an interrupted shear from its latest restart
+      if [ "$(cat "$dir/shear_$case.running" 2>/dev/null)" != "$shear_key" ]; then
+        # restart files of another definition of the shear are not resumed
+        /usr/bin/python3 "$root/scripts/resume_shear.py" clean "$o"; rm -f "$o".part*
+        echo "$shear_key" > "$dir/shear_$case.running"
+      fi
+      resume_from=$(/usr/bin/python3 "$root/scripts/resume_shear.py" start "$o" "$dir/prepared.restart.walls")
+      if [ -n "$resume_from" ]; then
+        echo "   resuming from $(basename "$resume_from")"
+        run_vars=(-var restart "$resume_from" -var resume 1 -var start "$o.start" -var out "$o.part")
+        writing=$o.part
+      fi
+    fi
+    "${mpi[@]}" "$exe" -in in.shear_$case "${run_vars[@]}" -var rate "$rate" -var eatarget "$strain" \
+        "${shear_vars[@]}" -log "$dir/log.shear_$case" > "$dir/screen.shear_$case" &
     pid=$!
-    /usr/bin/python3 "$root/scripts/progress.py" "$dir/shear_$case.txt" "$strain" "$pid" "$case" &
+    /usr/bin/python3 "$root/scripts/progress.py" "$writing" "$strain" "$pid" "$case" &
     mon=$!
-    wait "$pid" || { kill "$mon" 2>/dev/null; tail -20 "$dir/screen.shear_$case"; exit 1; }
+    status=0; wait "$pid" || status=$?
     kill "$mon" 2>/dev/null || true
+    if [ "$restartevery" -gt 0 ]; then /usr/bin/python3 "$root/scripts/resume_shear.py" finish "$o"; fi
+    [ "$status" = 0 ] || { tail -20 "$dir/screen.shear_$case"; exit 1; }
+    if [ "$restartevery" -gt 0 ]; then
+      /usr/bin/python3 "$root/scripts/resume_shear.py" clean "$o"; rm -f "$dir/shear_$case.running"
+    fi
     grep -E "^SHEAR done" "$dir/screen.shear_$case"
     echo "$shear_key" > "$dir/shear_$case.key"
   done

@@ -153,6 +153,17 @@ def max_dilatancy(ea, ev, width=0.01):
     return dilatancy_angle(slopes[k]), float(centres[k]), float(slopes[k])
 
 
+def correlation(table, x, y):
+    """Pearson correlation coefficient of two columns over the output lines."""
+    if not (table.has(x) and table.has(y)):
+        return NotMeasurable(f"no {x} or {y} column")
+    a, b = table[x], table[y]
+    ok = np.isfinite(a) & np.isfinite(b)
+    if ok.sum() < 3 or np.ptp(a[ok]) == 0 or np.ptp(b[ok]) == 0:
+        return NotMeasurable("fewer than 3 lines or a constant column")
+    return float(np.corrcoef(a[ok], b[ok])[0, 1])
+
+
 def analyse_curves(table, elastic_fraction=0.3, dilatancy_window=0.01):
     """All macro quantities of one run as a dict (numbers or NotMeasurable)."""
     ea, s1, s3 = table["ea"], table["s1"], table["s3"]
@@ -188,6 +199,8 @@ def analyse_curves(table, elastic_fraction=0.3, dilatancy_window=0.01):
     res["dilatancy_window"] = dilatancy_window
     res["I_max"] = float(np.nanmax(table["I"])) if table.has("I") else NotMeasurable("no I column")
     res["f0_end"] = float(table["f0"][-1]) if table.has("f0") else NotMeasurable("no f0 column")
+    for key, column in (("corr_gsi_a", "gsi"), ("corr_gsi_all_a", "gsi_all")):
+        res[key] = correlation(table, column, "a")
     if table.has("sxx_lw"):
         res["lw_check"] = float(table["sxx_lw"][-1] / s3[-1])
     else:

@@ -76,7 +76,10 @@ def fabric_evolution(runs, path):
     _series(ax_c, runs, "C_n", "-", r"$C_n$")
     _series(ax_c, runs, "Zm", "--", r"$Z_m$")
     ax_c.set_ylabel("coordination number")
-    _series(ax_l, runs, "gsi", "-", r"mean $\lambda$")
+    _series(ax_l, runs, "gsi", "-", r"mean $\lambda$ (2+ contacts)")
+    if any(r.table.has("gsi_all") for r in runs):
+        _series(ax_l, [r for r in runs if r.table.has("gsi_all")], "gsi_all", "--",
+                r"mean $\lambda$, rattlers as 1 (published)")
     ax_l.set_ylabel(r"mean geometrical stability index $\lambda$")
     for ax in (ax_a, ax_c, ax_l):
         ax.set_xlabel(r"$\varepsilon_{11}$ [%]")

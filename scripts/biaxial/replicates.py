@@ -61,6 +61,8 @@ QUANTITIES = [
     ("band thickness, measured [mm]", lambda r: _scaled(_band(r, "thickness"), 1e3), 1),
     ("band thickness / D50", _per_d50, 1),
     ("f0 at the end [N]", lambda r: r.curves["f0_end"], 1),
+    ("correlation of mean lambda with a", lambda r: r.curves["corr_gsi_a"], 3),
+    ("correlation of mean lambda (rattlers as 1) with a", lambda r: r.curves["corr_gsi_all_a"], 3),
     ("max inertial number I", lambda r: r.curves["I_max"], "{:.2e}"),
     ("Love-Weber s_xx / s3 at the end", lambda r: r.curves["lw_check"], 3),
 ]

@@ -85,6 +85,8 @@ def rows_for(run):
         ("D50 [mm]", f"{1e3 * d50:.3f} ({run.d50_source})"),
         ("10-11 x D50 [mm]", f"{1e4 * d50:.1f}-{1.1e4 * d50:.1f}"),
         ("f0 at the end [N]", _value(c["f0_end"], fmt="{:.4g}")),
+        ("correlation of mean lambda with a", _value(c["corr_gsi_a"], fmt="{:.3f}")),
+        ("correlation of mean lambda (rattlers as 1) with a", _value(c["corr_gsi_all_a"], fmt="{:.3f}")),
         ("max inertial number I", _value(c["I_max"], fmt="{:.2e}")),
         ("Love-Weber s_xx / s3 at the end", _value(c["lw_check"], fmt="{:.3f}")),
     ]

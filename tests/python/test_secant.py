@@ -31,6 +31,26 @@ class HalfRise(unittest.TestCase):
         self.assertFalse(measured(E50) or measured(nu50))
 
 
+class Correlation(unittest.TestCase):
+    class Table(dict):
+        def has(self, k):
+            return k in self
+
+    def test_exact_line_and_anti_line(self):
+        t = self.Table(gsi=np.array([0.1, 0.2, 0.3, 0.5]), a=np.array([1.0, 3.0, 5.0, 9.0]))
+        self.assertAlmostEqual(curves.correlation(t, "gsi", "a"), 1.0, places=14)
+        t["a"] = -t["a"]
+        self.assertAlmostEqual(curves.correlation(t, "gsi", "a"), -1.0, places=14)
+
+    def test_hand_worked(self):
+        # x = 1, 2, 3; y = 1, 3, 2: cov = 0.5, var x = var y = 1 -> r = 0.5
+        t = self.Table(gsi=np.array([1.0, 2.0, 3.0]), a=np.array([1.0, 3.0, 2.0]))
+        self.assertAlmostEqual(curves.correlation(t, "gsi", "a"), 0.5, places=14)
+
+    def test_missing_column(self):
+        self.assertFalse(measured(curves.correlation(self.Table(a=np.ones(3)), "gsi", "a")))
+
+
 class AffineStrain(unittest.TestCase):
     def test_exact_affine_field(self):
         rng = np.random.default_rng(1)
