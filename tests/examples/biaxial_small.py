@@ -33,18 +33,7 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-EXAMPLE = os.path.join(ROOT, "examples", "biaxial")
-
-
-def run(cmd, log):
-    with open(log, "w") as f:
-        p = subprocess.run(cmd, cwd=EXAMPLE, stdout=f, stderr=subprocess.STDOUT, timeout=900)
-    if p.returncode != 0:
-        with open(log) as f:
-            sys.exit("FAIL: %s exited %d\n%s" % (" ".join(cmd[:8]), p.returncode, f.read()[-3000:]))
-    with open(log) as f:
-        return f.read()
+from example_run import ROOT, run
 
 
 def fields(line):
