@@ -11,6 +11,7 @@
 #                            feed-forward; writes restart files and resumes an interrupted
 #                            shear from the latest; results in out/paper/ (about an hour
 #                            per case at full size on 2 cores: try --paper --scale 0.25)
+#   ./run.sh --restart-every N   with --paper: restart files every N steps (default 50 000)
 #   ./run.sh --np N          MPI ranks (default: the number of cores)
 #   ./run.sh --rate R        axial strain rate [1/s] (default 0.0025: the fastest within the
 #                            sample scatter for the membrane, bench/accuracy_sweep.md)
@@ -29,13 +30,14 @@ set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
 
-scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1; paper=0
+scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1; paper=0; restart_every=50000
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) scale=0.25; strain=0.02 ;;
     --full) scale=1 ;;
     --scale) scale=$2; shift ;;
     --paper) paper=1 ;;
+    --restart-every) restart_every=$2; shift ;;
     --np) np=$2; shift ;;
     --rate) rate=$2; shift ;;
     --strain) strain=$2; shift ;;
@@ -55,7 +57,8 @@ shear_vars=(); restartevery=0
 if [ "$paper" = 1 ]; then
   rate=$(/usr/bin/python3 -c "print(0.02 / 60)")      # 2 %/min
   out=$root/out/paper
-  restartevery=50000                                  # 5 s of loading, 0.17 % strain
+  restartevery=$restart_every                         # default 5 s of loading, 0.17 % strain
+  [[ "$restartevery" =~ ^[1-9][0-9]*$ ]] || { echo "--restart-every needs a positive integer, not '$restartevery'"; exit 2; }
   shear_vars=(-var damping 1 -var adamp 0.7 -var feedforward 0 -var restartevery $restartevery)
 fi
 mkdir -p "$out"
@@ -132,5 +135,6 @@ done
 
 echo "== report"
 /usr/bin/python3 "$root/scripts/biaxial_report.py" --samples "${dirs[@]}" --outdir "$out"
-echo "== done in $(( $(date +%s) - t0 )) s; summary.md and stress_strain.png in out/biaxial/," \
-     "each sample's report and figures in out/biaxial/scale${scale}_seed*/"
+rel=${out#"$root"/}
+echo "== done in $(( $(date +%s) - t0 )) s; summary.md and stress_strain.png in $rel/," \
+     "each sample's report and figures in $rel/scale${scale}_seed*/"
