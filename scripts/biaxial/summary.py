@@ -106,7 +106,16 @@ Notes (conventions of the OUT file: compression and contraction positive; q = s1
   i.e. nu = d eps_lat/d eps_11 with eps_lat = -el positive in extension), slopes of
   least-squares lines over the window stated (from the first line to the last one
   with q - q0 <= 30 % of the rise to the peak, at least 4 lines). 2D values, no
-  plane-strain conversion.
+  plane-strain conversion. "Love-Weber stress inside": the same slope with q from the
+  Love-Weber stress of the disk-disk contacts (syy_lw - sxx_lw) instead of the boundaries.
+- E50 = (q(eps50) - q0)/eps50 and nu50 = -el(eps50)/eps50, secants from the first line to
+  eps50, the axial strain where q - q0 first reaches half its rise to the peak
+  (interpolated). "Love-Weber stress / particle strain": the secant of the internal
+  deviator against the particle strain, the best-fit affine deformation (least squares,
+  displacement against position) of the disks at least 2 D50 inside the sample outline
+  from the first dump frame, interpolated between frames to eps50; nu50 = -eps_xx/eps_yy
+  of that fit.
+- Correlation of mean lambda with a: Pearson coefficient over the output lines.
 - phi from the peak ratio R: R = tan^2(45 + phi/2), i.e. sin phi = (R - 1)/(R + 1).
 - psi: sin psi = -d eps_v/(d eps_1 - d eps_3) with eps_v = eps_1 + eps_3 (2D), so
   sin psi = -r/(2 - r), r = d eps_v/d eps_11 (eps_v contraction positive); r is the most
