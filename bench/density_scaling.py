@@ -74,11 +74,11 @@ def main():
             w.writerow([r["case"], r["seed"], r["rho"]] + ["%.6g" % r[k] for k in keys])
 
     lines = ["# Density scaling at one inertial number", "",
-             "`/usr/bin/python3 bench/density_scaling.py --scale %g --seeds %s` (%s; rho = 2e8 at rate %g /s "
+             "`/usr/bin/python3 bench/density_scaling.py --scale %g --seeds %s --strain %g` (%s; rho = 2e8 at rate %g /s "
              "against rho = 2650 at rate %.4g /s, dt, gvisc and vmax scaled with them). Per quantity: the largest "
              "|difference| between the two densities over the seeds, against the sample scatter (standard "
              "deviation over the seeds at rho = 2e8); the curves: the largest |difference| of s1/s3 along "
-             "the strain over the seeds." % (a.scale, " ".join(map(str, a.seeds)), ", ".join(a.cases), RATE,
+             "the strain over the seeds." % (a.scale, " ".join(map(str, a.seeds)), a.strain, ", ".join(a.cases), RATE,
                                               settings_for(RHO_REAL, a.strain)["rate"]), "",
              "| case | quantity | max abs(rho 2650 - rho 2e8) | sample scatter (sd) | ratio |", "|---|---|---|---|---|"]
     for case in a.cases:
