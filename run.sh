@@ -53,13 +53,14 @@ tools/install-deps.sh
 tools/build.sh >/dev/null
 exe=$root/build/app/liggghts-membrane
 out=$root/out/biaxial
-shear_vars=(); restartevery=0
+shear_vars=()
 if [ "$paper" = 1 ]; then
   rate=$(/usr/bin/python3 -c "print(0.02 / 60)")      # 2 %/min
   out=$root/out/paper
-  restartevery=$restart_every                         # default 5 s of loading, 0.17 % strain
-  [[ "$restartevery" =~ ^[1-9][0-9]*$ ]] || { echo "--restart-every needs a positive integer, not '$restartevery'"; exit 2; }
-  shear_vars=(-var damping 1 -var adamp 0.7 -var feedforward 0 -var restartevery $restartevery)
+  [[ "$restart_every" =~ ^[1-9][0-9]*$ ]] || { echo "--restart-every needs a positive integer, not '$restart_every'"; exit 2; }
+  shear_vars=(-var damping 1 -var adamp 0.7 -var feedforward 0 -var restartevery $restart_every)
+else
+  restart_every=0                                     # restart files (and resuming) only with --paper
 fi
 mkdir -p "$out"
 cd examples/biaxial
@@ -103,7 +104,7 @@ for k in $(seq 1 "$samples"); do
     o=$dir/shear_$case.txt
     run_vars=(-var restart "$dir/prepared.restart" -var out "$o")
     writing=$o
-    if [ "$restartevery" -gt 0 ]; then        # resume an interrupted shear from its latest restart
+    if [ "$restart_every" -gt 0 ]; then        # resume an interrupted shear from its latest restart
       if [ "$(cat "$dir/shear_$case.running" 2>/dev/null)" != "$shear_key" ]; then
         # restart files of another definition of the shear are not resumed
         /usr/bin/python3 "$root/scripts/resume_shear.py" clean "$o"; rm -f "$o".part*
@@ -123,9 +124,9 @@ for k in $(seq 1 "$samples"); do
     mon=$!
     status=0; wait "$pid" || status=$?
     kill "$mon" 2>/dev/null || true
-    if [ "$restartevery" -gt 0 ]; then /usr/bin/python3 "$root/scripts/resume_shear.py" finish "$o"; fi
+    if [ "$restart_every" -gt 0 ]; then /usr/bin/python3 "$root/scripts/resume_shear.py" finish "$o"; fi
     [ "$status" = 0 ] || { tail -20 "$dir/screen.shear_$case"; exit 1; }
-    if [ "$restartevery" -gt 0 ]; then
+    if [ "$restart_every" -gt 0 ]; then
       /usr/bin/python3 "$root/scripts/resume_shear.py" clean "$o"; rm -f "$dir/shear_$case.running"
     fi
     grep -E "^SHEAR done" "$dir/screen.shear_$case"
