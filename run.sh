@@ -9,8 +9,9 @@
 #   ./run.sh --paper         the published procedure as closely as LIGGGHTS allows (doc/paper_preset.md):
 #                            2 %/min, PFC local damping alpha 0.7, side-wall servo without
 #                            feed-forward; writes restart files and resumes an interrupted
-#                            shear from the latest; results in out/paper/ (about 1.5 h
-#                            per case on 2 cores, at full size as at --scale 0.25)
+#                            shear from the latest; results in out/paper/ (full size:
+#                            about 50 min per case on 2 cores; --scale 0.25 --np 1:
+#                            34 min for the preparation and both cases)
 #   ./run.sh --restart-every N   with --paper: restart files every N steps (default 50 000)
 #   ./run.sh --np N          MPI ranks (default: the number of cores)
 #   ./run.sh --rate R        axial strain rate [1/s] (default 0.0025: the fastest within the
