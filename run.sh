@@ -94,7 +94,7 @@ for k in $(seq 1 "$samples"); do
   fi
 
   for case in rigid membrane; do
-    shear_key="$prep_key rate $rate strain $strain ${shear_vars[*]} scripts $(script_hash in.shear_$case shear_setup.inc shear_loading.inc damping.inc)"
+    shear_key="$prep_key rate $rate strain $strain ${shear_vars[*]} scripts $(script_hash in.shear_$case shear_setup.inc shear_measure.inc shear_loading.inc damping.inc)"
     if [ "$(cat "$dir/shear_$case.key" 2>/dev/null)" = "$shear_key" ] \
         && grep -qE "^SHEAR done" "$dir/screen.shear_$case" 2>/dev/null; then
       echo "== shear, $case, seed $s: done before, reused"

@@ -19,14 +19,12 @@ import concurrent.futures as cf
 import csv
 import os
 import re
-import subprocess
-import sys
 import time
+
+import biaxial_runs
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-EXAMPLES = os.path.join(ROOT, "examples", "biaxial")
-EXE = os.path.join(ROOT, "build", "app", "liggghts-membrane")
 
 # the PREPARED line of in.prepare, the fields read here
 FIELDS = {
@@ -49,32 +47,15 @@ def prepared_values(screen_text):
     return out
 
 
-def prepare(exe, scale, seed, n0, rundir):
-    """One preparation (reused when its screen output is complete)."""
+def prepare(scale, seed, n0, rundir):
+    """One preparation at growth porosity n0 (reused when it finished): its PREPARED
+    values and the seconds it took (about 0 when reused)."""
     folder = os.path.join(rundir, "scale%g_seed%d_n%g" % (scale, seed, n0))
-    screen = os.path.join(folder, "screen.prepare")
-    if os.path.exists(screen):
-        with open(screen) as f:
-            values = prepared_values(f.read())
-        if values:
-            return values, 0.0
-    os.makedirs(folder, exist_ok=True)
-    data = os.path.join(folder, "sample.data")
-    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "generate_sample.py"), "--scale",
-                    str(scale), "--seed", str(seed), "--out", data], check=True, capture_output=True)
     t0 = time.time()
-    with open(screen + ".tmp", "w") as f:
-        p = subprocess.run([exe, "-in", "in.prepare", "-var", "data", data, "-var", "out",
-                            os.path.join(folder, "prepared.restart"), "-var", "n0", str(n0),
-                            "-log", "none"], cwd=EXAMPLES, stdout=f, stderr=subprocess.STDOUT)
-    took = time.time() - t0
-    with open(screen + ".tmp") as f:
+    biaxial_runs.prepare(scale, seed, folder, {"n0": n0})
+    with open(os.path.join(folder, "screen.prepare")) as f:
         values = prepared_values(f.read())
-    if p.returncode != 0 or values is None:
-        raise RuntimeError("in.prepare failed for scale %g seed %d n0 %g: see %s"
-                           % (scale, seed, n0, screen + ".tmp"))
-    os.replace(screen + ".tmp", screen)
-    return values, took
+    return values, time.time() - t0
 
 
 def main():
@@ -83,14 +64,13 @@ def main():
     ap.add_argument("--seeds", type=int, nargs="+", default=[12345, 13345, 14345])
     ap.add_argument("--porosities", type=float, nargs="+", default=[0.10, 0.12, 0.14, 0.16])
     ap.add_argument("--jobs", type=int, default=2, help="preparations at a time, 1 rank each")
-    ap.add_argument("--exe", default=EXE, help="liggghts-membrane (default: build/app/)")
     ap.add_argument("--rundir", default=os.path.join(ROOT, "out", "porosity_coordination"))
     args = ap.parse_args()
 
     t0 = time.time()
     tasks = [(n0, seed) for n0 in args.porosities for seed in args.seeds]
     with cf.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = {t: pool.submit(prepare, args.exe, args.scale, t[1], t[0], args.rundir) for t in tasks}
+        futures = {t: pool.submit(prepare, args.scale, t[1], t[0], args.rundir) for t in tasks}
         results = {t: f.result() for t, f in futures.items()}
 
     rows = []
