@@ -20,8 +20,8 @@
 void LAMMPS_NS::LAMMPS::post_create()
 {
   using PostCreate = void (*)(LAMMPS_NS::LAMMPS *);
-  static PostCreate library_post_create = reinterpret_cast<PostCreate>(
-      dlsym(RTLD_NEXT, "_ZN9LAMMPS_NS6LAMMPS11post_createEv"));
+  static PostCreate library_post_create =
+      reinterpret_cast<PostCreate>(dlsym(RTLD_NEXT, "_ZN9LAMMPS_NS6LAMMPS11post_createEv"));
   if (!library_post_create) {
     fprintf(stderr, "liggghts-membrane: LAMMPS::post_create not found in libliggghts\n");
     abort();

@@ -31,8 +31,7 @@ using ComputeCreator = Compute *(*)(LAMMPS *, int, int, char **);
 using FixMap = std::map<std::string, FixCreator>;
 using ComputeMap = std::map<std::string, ComputeCreator>;
 
-template <typename Tag, typename Tag::type Member>
-struct PrivateMember {
+template <typename Tag, typename Tag::type Member> struct PrivateMember {
   friend typename Tag::type member_pointer(Tag) { return Member; }
 };
 
@@ -45,15 +44,13 @@ struct ComputeMapTag {
   friend type member_pointer(ComputeMapTag);
 };
 
-template <typename T>
-Fix *create_fix(LAMMPS *lmp, int narg, char **arg)
+template <typename T> Fix *create_fix(LAMMPS *lmp, int narg, char **arg)
 {
   return new T(lmp, narg, arg);
 }
 
 // LIGGGHTS computes take the argument cursor by reference.
-template <typename T>
-Compute *create_compute(LAMMPS *lmp, int iarg, int narg, char **arg)
+template <typename T> Compute *create_compute(LAMMPS *lmp, int iarg, int narg, char **arg)
 {
   return new T(lmp, iarg, narg, arg);
 }
@@ -61,7 +58,7 @@ Compute *create_compute(LAMMPS *lmp, int iarg, int narg, char **arg)
 template struct PrivateMember<FixMapTag, &Modify::fix_map>;
 template struct PrivateMember<ComputeMapTag, &Modify::compute_map>;
 
-}  // namespace
+} // namespace
 
 void register_project_styles(LAMMPS *lmp)
 {

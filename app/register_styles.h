@@ -1,7 +1,9 @@
 #ifndef LIGGGHTS_MEMBRANE_REGISTER_STYLES_H
 #define LIGGGHTS_MEMBRANE_REGISTER_STYLES_H
 
-namespace LAMMPS_NS { class LAMMPS; }
+namespace LAMMPS_NS {
+class LAMMPS;
+}
 
 // Add this project's fix and compute styles to a LIGGGHTS instance, so that
 // input scripts can use them exactly like built-in styles.

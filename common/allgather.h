@@ -24,8 +24,8 @@ inline void allgather_doubles(MPI_Comm comm, const std::vector<double> &send,
     total += counts[p];
   }
   recv.resize(total);
-  MPI_Allgatherv(const_cast<double *>(send.data()), nsend, MPI_DOUBLE, recv.data(),
-                 counts.data(), displs.data(), MPI_DOUBLE, comm);
+  MPI_Allgatherv(const_cast<double *>(send.data()), nsend, MPI_DOUBLE, recv.data(), counts.data(),
+                 displs.data(), MPI_DOUBLE, comm);
 }
 
 #endif

@@ -63,7 +63,7 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
   LAMMPS_NS::Atom *atom = lmp->atom;
   std::vector<double> diameters, all;
   std::vector<int> counts, displs;
-  double sums[2] = {0.0, 0.0};   // mass, area
+  double sums[2] = {0.0, 0.0}; // mass, area
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     diameters.push_back(2.0 * atom->radius[i]);
@@ -101,20 +101,24 @@ inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm wor
     char buf[768];
     int n = snprintf(buf, sizeof(buf),
                      "time step %g s is %.2g x sqrt(m_min/k_n) = %.3g s (m_min = %.3g kg, "
-                     "k_n = %.3g N/m), above the limit %g", dt, ratio,
-                     stability::contact_time(mmin, kmax), mmin, kmax, limit);
+                     "k_n = %.3g N/m), above the limit %g",
+                     dt, ratio, stability::contact_time(mmin, kmax), mmin, kmax, limit);
     if (n < 0 || n >= static_cast<int>(sizeof(buf))) n = static_cast<int>(sizeof(buf)) - 1;
     const size_t rest = sizeof(buf) - static_cast<size_t>(n);
     if (ratio > poorly_resolved)
-      snprintf(buf + n, rest, "; above %g the contacts are poorly resolved and the run may go "
+      snprintf(buf + n, rest,
+               "; above %g the contacts are poorly resolved and the run may go "
                "unstable: reduce it, use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)",
-               poorly_resolved, suggested, fraction, fraction == safe ? ", the published set-up" : "");
+               poorly_resolved, suggested, fraction,
+               fraction == safe ? ", the published set-up" : "");
     else if (ratio > safe)
       snprintf(buf + n, rest, ": use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)", suggested,
                fraction, fraction == safe ? ", the published set-up" : "");
     else
-      snprintf(buf + n, rest, "; it is within %g x sqrt(m_min/k_n), the published set-up, which is "
-               "safe: keep it, or use timestep <= %.2g only to stay below the limit", safe, suggested);
+      snprintf(buf + n, rest,
+               "; it is within %g x sqrt(m_min/k_n), the published set-up, which is "
+               "safe: keep it, or use timestep <= %.2g only to stay below the limit",
+               safe, suggested);
     lmp->error->warning(FLERR, (prefix + buf).c_str());
   }
   if (ratio > limit) warned_dt = dt;

@@ -14,7 +14,9 @@
 
 class RestartRecordWriter {
  public:
-  RestartRecordWriter(double magic, int version) : data_{magic, static_cast<double>(version), 0.0} {}
+  RestartRecordWriter(double magic, int version) : data_{magic, static_cast<double>(version), 0.0}
+  {
+  }
   void put(double v) { data_.push_back(v); }
   // the record, its length filled in
   const std::vector<double> &finish()
@@ -33,12 +35,14 @@ class RestartRecordReader {
   RestartRecordReader(const double *data, std::size_t n, double magic, int version) : data_(data)
   {
     if (n < HEADER || data[0] != magic) {
-      error_ = "it was written by an earlier version of this style (before format " + std::to_string(version) + ")";
+      error_ = "it was written by an earlier version of this style (before format " +
+               std::to_string(version) + ")";
       return;
     }
     version_ = static_cast<int>(data[1]);
     if (version_ != version) {
-      error_ = "it is in format " + std::to_string(version_) + "; this build reads format " + std::to_string(version);
+      error_ = "it is in format " + std::to_string(version_) + "; this build reads format " +
+               std::to_string(version);
       return;
     }
     const double length = data[2];
@@ -85,7 +89,7 @@ class RestartRecordReader {
   }
 
  private:
-  static constexpr std::size_t HEADER = 3;   // magic, version, length
+  static constexpr std::size_t HEADER = 3; // magic, version, length
   const double *data_;
   std::size_t n_ = 0, pos_ = 0;
   int version_ = 0;

@@ -26,14 +26,18 @@ class ScalarInput {
     if (text.compare(0, 2, "v_") == 0) {
       varname_ = text.substr(2);
       if (varname_.empty())
-        lmp->error->all(FLERR, keyword_message(prefix, name, text, "the variable name after v_ is empty").c_str());
+        lmp->error->all(
+            FLERR,
+            keyword_message(prefix, name, text, "the variable name after v_ is empty").c_str());
       return;
     }
     char *end = nullptr;
     value_ = strtod(arg, &end);
     if (text.empty() || *end != '\0' || !std::isfinite(value_))
-      lmp->error->all(FLERR, keyword_message(prefix, name, text,
-                                             "must be a finite number or v_name (an equal-style variable)").c_str());
+      lmp->error->all(FLERR,
+                      keyword_message(prefix, name, text,
+                                      "must be a finite number or v_name (an equal-style variable)")
+                          .c_str());
   }
 
   // finds the variable (input scripts may define it after the style)
@@ -43,12 +47,17 @@ class ScalarInput {
     ivar_ = lmp->input->variable->find(const_cast<char *>(varname_.c_str()));
     if (ivar_ < 0)
       lmp->error->all(FLERR, keyword_message(prefix, name, "v_" + varname_,
-                                             "variable '" + varname_ + "' does not exist; define it "
-                                             "(variable " + varname_ + " equal ...) before the run").c_str());
+                                             "variable '" + varname_ +
+                                                 "' does not exist; define it "
+                                                 "(variable " +
+                                                 varname_ + " equal ...) before the run")
+                                 .c_str());
     if (!lmp->input->variable->equalstyle(ivar_))
       lmp->error->all(FLERR, keyword_message(prefix, name, "v_" + varname_,
-                                             "variable '" + varname_ + "' is not equal-style; use an "
-                                             "equal-style variable (one number)").c_str());
+                                             "variable '" + varname_ +
+                                                 "' is not equal-style; use an "
+                                                 "equal-style variable (one number)")
+                                 .c_str());
   }
 
   // computes referenced by the variable are invoked on demand, as fix ave/time does
@@ -68,10 +77,12 @@ class ScalarInput {
   {
     const double v = evaluate(lmp);
     if (!std::isfinite(v) || (non_negative && !(v >= 0.0)))
-      lmp->error->all(FLERR, keyword_message(prefix, name, text(),
-                                             std::string("is ") + number_text(v) + " at step " +
-                                             std::to_string(lmp->update->ntimestep) + "; it must be " +
-                                             (non_negative ? "a finite number >= 0" : "finite")).c_str());
+      lmp->error->all(FLERR,
+                      keyword_message(prefix, name, text(),
+                                      std::string("is ") + number_text(v) + " at step " +
+                                          std::to_string(lmp->update->ntimestep) + "; it must be " +
+                                          (non_negative ? "a finite number >= 0" : "finite"))
+                          .c_str());
     return v;
   }
 

@@ -24,7 +24,7 @@
 // %g of a number, for messages
 inline std::string number_text(double v)
 {
-  if (std::isnan(v)) return "nan";   // not "-nan", whatever its sign bit
+  if (std::isnan(v)) return "nan"; // not "-nan", whatever its sign bit
   char buf[64];
   snprintf(buf, sizeof(buf), "%g", v);
   return buf;
@@ -39,7 +39,9 @@ inline std::string keyword_message(const std::string &prefix, const std::string 
 class StyleArgs {
  public:
   StyleArgs(LAMMPS_NS::LAMMPS *lmp, std::string prefix, int narg, char **arg, int first)
-    : lmp_(lmp), prefix_(std::move(prefix)), narg_(narg), arg_(arg), next_(first) {}
+    : lmp_(lmp), prefix_(std::move(prefix)), narg_(narg), arg_(arg), next_(first)
+  {
+  }
 
   bool more() const { return next_ < narg_; }
 
@@ -83,7 +85,10 @@ class StyleArgs {
     return v;
   }
 
-  long integer(long lo, long hi, const std::string &usage) { return to_integer(value(usage), lo, hi, usage); }
+  long integer(long lo, long hi, const std::string &usage)
+  {
+    return to_integer(value(usage), lo, hi, usage);
+  }
 
   // the current value `text` (already taken with value()) as an integer
   long to_integer(const char *text, long lo, long hi, const std::string &usage)
@@ -121,7 +126,7 @@ class StyleArgs {
   [[noreturn]] void fail_all(const std::string &text) const
   {
     lmp_->error->all(FLERR, text.c_str());
-    std::abort();   // Error::all does not return; tells the compiler so
+    std::abort(); // Error::all does not return; tells the compiler so
   }
 
   LAMMPS_NS::LAMMPS *lmp_;

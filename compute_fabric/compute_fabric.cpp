@@ -58,8 +58,8 @@ const char *const USE_STRESS =
     "stress A or v_name, the sample area (length^2 per unit thickness) of the Love-Weber stress";
 const char *const USE_UPDATE =
     "update_on_run_end yes or no, invoke the compute at the end of each run (default no)";
-const char *const USE_REGION =
-    "region ID, count only the particles whose centre is inside region ID (a region defined before compute fabric)";
+const char *const USE_REGION = "region ID, count only the particles whose centre is inside region "
+                               "ID (a region defined before compute fabric)";
 
 bool yes_no(StyleArgs &args, const char *usage)
 {
@@ -69,28 +69,31 @@ bool yes_no(StyleArgs &args, const char *usage)
   return false;
 }
 
-std::string msg(const std::string &text) { return PREFIX + text; }
+std::string msg(const std::string &text)
+{
+  return PREFIX + text;
+}
 
-}  // namespace
+} // namespace
 
 /* ---------------------------------------------------------------------- */
 
-ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg) :
-  Compute(lammps, iarg, narg, arg),
-  nbins(18), estimator(Estimator::Unbiased), stability_flag(false),
-  rattlers_flag(false), histogram_flag(false), stress_flag(false),
-  area_ivar(-1), iregion(-1),
-  walls_flag(false),
-  gathered_step(-1), nparticles(0), no_normal(0), first_no_normal(0),
-  warned_no_normal(false), nmax_atom(0)
+ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
+  : Compute(lammps, iarg, narg, arg), nbins(18), estimator(Estimator::Unbiased),
+    stability_flag(false), rattlers_flag(false), histogram_flag(false), stress_flag(false),
+    area_ivar(-1), iregion(-1), walls_flag(false), gathered_step(-1), nparticles(0), no_normal(0),
+    first_no_normal(0), warned_no_normal(false), nmax_atom(0)
 {
   if (domain->dimension != 2)
-    error->all(FLERR, msg("requires dimension 2: it is a 2D compute; set dimension 2 before create_box").c_str());
+    error->all(
+        FLERR,
+        msg("requires dimension 2: it is a 2D compute; set dimension 2 before create_box").c_str());
   if (!atom->radius_flag)
     error->all(FLERR, msg("requires per-atom radii; use atom_style granular (or sphere)").c_str());
   if (atom->tag_enable == 0 || atom->map_style == 0)
     error->all(FLERR, msg("requires atom IDs and an atom map; add atom_modify map array "
-                          "before create_box").c_str());
+                          "before create_box")
+                          .c_str());
 
   // the base class leaves its output pointers uninitialised
   vector = nullptr;
@@ -130,14 +133,19 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
     const std::string key = args.keyword();
     if (key == "bins") {
       const long n = args.integer(LONG_MIN, LONG_MAX, USE_BINS);
-      if (n < 6 || n > 3600 || n % 2 != 0) args.bad("must be an even integer from 6 to 3600", USE_BINS);
+      if (n < 6 || n > 3600 || n % 2 != 0)
+        args.bad("must be an even integer from 6 to 3600", USE_BINS);
       nbins = static_cast<int>(n);
     } else if (key == "estimator") {
       const std::string value = args.value(USE_ESTIMATOR);
-      if (value == "unbiased") estimator = Estimator::Unbiased;
-      else if (value == "published") estimator = Estimator::Published;
-      else if (value == "tensor") estimator = Estimator::Tensor;
-      else args.bad("must be unbiased, published or tensor", USE_ESTIMATOR);
+      if (value == "unbiased")
+        estimator = Estimator::Unbiased;
+      else if (value == "published")
+        estimator = Estimator::Published;
+      else if (value == "tensor")
+        estimator = Estimator::Tensor;
+      else
+        args.bad("must be unbiased, published or tensor", USE_ESTIMATOR);
     } else if (key == "stability") {
       stability_flag = yes_no(args, USE_STABILITY);
     } else if (key == "rattlers") {
@@ -173,9 +181,11 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
     }
   }
   if (rattlers_flag && !stability_flag && comm->me == 0)
-    error->warning(FLERR, keyword_message(PREFIX, "rattlers", "yes",
-                                          "has no effect without stability yes (it only changes the "
-                                          "mean stability index, vector entry 13); add stability yes").c_str());
+    error->warning(FLERR,
+                   keyword_message(PREFIX, "rattlers", "yes",
+                                   "has no effect without stability yes (it only changes the "
+                                   "mean stability index, vector entry 13); add stability yes")
+                       .c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -213,13 +223,17 @@ void ComputeFabric::find_source(ContactSource &src)
     if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
       error->all(FLERR, msg(named + " lacks the values pos, id or force that compute " + id +
                             " (fabric) reads from it; define it as compute " + c->id + " " +
-                            group->names[c->igroup] + " " + src.style + " pos id force").c_str());
+                            group->names[c->igroup] + " " + src.style + " pos id force")
+                            .c_str());
     if (c->igroup != 0 && c->igroup != igroup)
-      error->all(FLERR, msg("compute " + std::string(id) + " (fabric, group " + group->names[igroup] +
-                            ") reads the contacts from " + named + ", which leaves out the contacts "
-                            "outside group " + group->names[c->igroup] + "; define compute " + c->id +
+      error->all(FLERR, msg("compute " + std::string(id) + " (fabric, group " +
+                            group->names[igroup] + ") reads the contacts from " + named +
+                            ", which leaves out the contacts "
+                            "outside group " +
+                            group->names[c->igroup] + "; define compute " + c->id +
                             " in group all: a pair style takes one compute " + src.style +
-                            " and every compute fabric reads it").c_str());
+                            " and every compute fabric reads it")
+                            .c_str());
     src.compute = found;
     if (!src.id) {
       src.id = new char[strlen(c->id) + 1];
@@ -238,11 +252,11 @@ void ComputeFabric::create_source(ContactSource &src, const char *suffix)
 
   char *args[6];
   args[0] = src.id;
-  args[1] = (char *) "all";
+  args[1] = (char *)"all";
   args[2] = const_cast<char *>(src.style);
-  args[3] = (char *) "pos";
-  args[4] = (char *) "id";
-  args[5] = (char *) "force";
+  args[3] = (char *)"pos";
+  args[4] = (char *)"id";
+  args[5] = (char *)"force";
   // pair/gran/local refuses to be created after a run ("define this compute
   // before first run"), which includes any script that starts with read_restart.
   // The check protects its optional 'history' columns, whose layout is fixed when
@@ -276,22 +290,27 @@ void ComputeFabric::init()
     // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
     // wall is recognised by the mesh fixes it needs)
     if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
-      error->all(FLERR, keyword_message(PREFIX, "walls", "yes",
-                                        "needs a fix wall/gran with mesh walls (LIGGGHTS reports no "
-                                        "contact forces for primitive walls); use mesh walls (fix "
-                                        "mesh/surface and fix wall/gran ... mesh) or walls no").c_str());
+      error->all(FLERR,
+                 keyword_message(PREFIX, "walls", "yes",
+                                 "needs a fix wall/gran with mesh walls (LIGGGHTS reports no "
+                                 "contact forces for primitive walls); use mesh walls (fix "
+                                 "mesh/surface and fix wall/gran ... mesh) or walls no")
+                     .c_str());
     init_source(walls, "_walls");
   }
 
   if (!idregion.empty()) {
     iregion = domain->find_region(const_cast<char *>(idregion.c_str()));
     if (iregion < 0)
-      error->all(FLERR, keyword_message(PREFIX, "region", idregion,
-                                        "region " + idregion + " was deleted; define it again "
-                                        "before the run, or use a compute fabric without region").c_str());
+      error->all(FLERR,
+                 keyword_message(PREFIX, "region", idregion,
+                                 "region " + idregion +
+                                     " was deleted; define it again "
+                                     "before the run, or use a compute fabric without region")
+                     .c_str());
   }
   if (stress_flag) {
-    area_in.init(lmp, PREFIX, "stress");   // the variable exists and is equal-style
+    area_in.init(lmp, PREFIX, "stress"); // the variable exists and is equal-style
     if (area_in.is_variable())
       area_ivar = input->variable->find(const_cast<char *>(area_in.text().substr(2).c_str()));
   }
@@ -330,19 +349,22 @@ void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
       const int ip = atom->map(static_cast<int>(row[oid + 2]));
       if (ip < 0 || !(atom->mask[ip] & groupbit)) continue;
       if (region && !region->match(xp[0], xp[1], xp[2])) continue;
-      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0, xp[0], xp[1], cp[0], cp[1],
-                                        row[of], row[of + 1], atom->radius[ip]};
+      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0,    xp[0],       xp[1],           cp[0],
+                                        cp[1],        row[of], row[of + 1], atom->radius[ip]};
       std::copy(w, w + CONTACT_FIELDS, rec);
     } else {
       const double *xa = row + ox, *xb = row + ox + 3;
       // a pair/gran/local of group all (the user's) reports contacts outside our group
       const int ia = atom->map(static_cast<int>(row[oid]));
       const int ib = atom->map(static_cast<int>(row[oid + 1]));
-      if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit)) continue;
+      if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit))
+        continue;
       if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
         continue;
-      const double p[CONTACT_FIELDS] = {row[oid], row[oid + 1], xa[0], xa[1], xb[0], xb[1],
-                                        row[of], row[of + 1], atom->radius[ia] + atom->radius[ib]};
+      const double p[CONTACT_FIELDS] = {
+          row[oid], row[oid + 1], xa[0],
+          xa[1],    xb[0],        xb[1],
+          row[of],  row[of + 1],  atom->radius[ia] + atom->radius[ib]};
       std::copy(p, p + CONTACT_FIELDS, rec);
       if (rec[TAG_A] > rec[TAG_B]) {
         // make a the smaller tag; the force on the new a is minus the old one
@@ -408,8 +430,8 @@ void ComputeFabric::gather_contacts()
     domain->minimum_image(lx, ly, dz);
     // force on b from a is minus the force on a from b
     fabric::Contact &k = contact_list[c];
-    k = fabric::make_contact(static_cast<long>(rec[TAG_A]), static_cast<long>(rec[TAG_B]),
-                             lx, ly, -rec[FAX], -rec[FAY], rec[RADSUM]);
+    k = fabric::make_contact(static_cast<long>(rec[TAG_A]), static_cast<long>(rec[TAG_B]), lx, ly,
+                             -rec[FAX], -rec[FAY], rec[RADSUM]);
     if (!fabric::has_normal(k) && no_normal++ == 0) first_no_normal = c;
   }
   if (no_normal > 0) warn_no_normal();
@@ -436,10 +458,13 @@ void ComputeFabric::warn_no_normal()
   const std::string pair = k.b >= 0 ? "atoms " + std::to_string(k.a) + " and " + std::to_string(k.b)
                                     : "atom " + std::to_string(k.a) + " and a mesh wall";
   const std::string text = msg(
-      std::to_string(no_normal) + " contact(s) with coincident centres (" +
-      pair + ", distance " + number_text(std::hypot(k.lx, k.ly)) + ") have no normal; left out "
+      std::to_string(no_normal) + " contact(s) with coincident centres (" + pair + ", distance " +
+      number_text(std::hypot(k.lx, k.ly)) +
+      ") have no normal; left out "
       "of the fabric and force directions, the stress and the stability index, still counted in "
-      "N_c, C_n and Z_m (c_" + std::string(id) + "[17] is their number); were two atoms created "
+      "N_c, C_n and Z_m (c_" +
+      std::string(id) +
+      "[17] is their number); were two atoms created "
       "at one point? (warned once)");
   error->warning(FLERR, text.c_str());
 }
@@ -459,7 +484,8 @@ void ComputeFabric::index_contact_ends()
     ends.push_back({k.a, theta});
     if (k.b >= 0) ends.push_back({k.b, theta + M_PI});
   }
-  std::stable_sort(ends.begin(), ends.end(), [](const End &x, const End &y) { return x.tag < y.tag; });
+  std::stable_sort(ends.begin(), ends.end(),
+                   [](const End &x, const End &y) { return x.tag < y.tag; });
   end_tag.clear();
   end_start.clear();
   end_angle.resize(ends.size());
@@ -498,13 +524,14 @@ std::vector<int> ComputeFabric::contacts_per_particle() const
 // virial for compute stress/atom at its next step.
 double ComputeFabric::sample_area()
 {
-  const double area = area_in.is_variable() ? input->variable->compute_equal(area_ivar)
-                                            : area_in.evaluate(lmp);
+  const double area =
+      area_in.is_variable() ? input->variable->compute_equal(area_ivar) : area_in.evaluate(lmp);
   if (!(std::isfinite(area) && area > 0.0))
     error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
                                       "is " + number_text(area) + " at step " +
-                                      std::to_string(update->ntimestep) +
-                                      "; it must be a positive number (the sample area)").c_str());
+                                          std::to_string(update->ntimestep) +
+                                          "; it must be a positive number (the sample area)")
+                          .c_str());
   return area;
 }
 
@@ -616,7 +643,8 @@ void ComputeFabric::compute_peratom()
 
   for (int i = 0; i < nlocal; i++) {
     if (!atom_selected(i)) continue;
-    const auto it = std::lower_bound(end_tag.begin(), end_tag.end(), static_cast<long>(atom->tag[i]));
+    const auto it =
+        std::lower_bound(end_tag.begin(), end_tag.end(), static_cast<long>(atom->tag[i]));
     const bool found = it != end_tag.end() && *it == atom->tag[i];
     const size_t t = static_cast<size_t>(it - end_tag.begin());
     const int first = found ? end_start[t] : 0;

@@ -8,7 +8,9 @@
 
 #ifdef COMPUTE_CLASS
 
+// clang-format off
 ComputeStyle(fabric,ComputeFabric)
+// clang-format on
 
 #else
 
@@ -38,8 +40,24 @@ class ComputeFabric : public Compute {
 
   // global vector layout (1-based in input scripts: c_ID[k])
   enum VectorIndex {
-    A = 0, THETA_A, A_N, THETA_N, F0, A_T, THETA_T, CN, ZM, NCONTACT,
-    NPARTICLE, EMPTY_BINS, MEAN_GSI, SXX, SYY, SXY, NO_NORMAL, VECTOR_SIZE
+    A = 0,
+    THETA_A,
+    A_N,
+    THETA_N,
+    F0,
+    A_T,
+    THETA_T,
+    CN,
+    ZM,
+    NCONTACT,
+    NPARTICLE,
+    EMPTY_BINS,
+    MEAN_GSI,
+    SXX,
+    SYY,
+    SXY,
+    NO_NORMAL,
+    VECTOR_SIZE
   };
 
  private:
@@ -47,41 +65,41 @@ class ComputeFabric : public Compute {
 
   int nbins;
   Estimator estimator;
-  bool stability_flag;     // mean GSI in the vector
-  bool rattlers_flag;      // include particles with < 2 contacts in the mean GSI
-  bool histogram_flag;     // polar histograms as global array
+  bool stability_flag; // mean GSI in the vector
+  bool rattlers_flag;  // include particles with < 2 contacts in the mean GSI
+  bool histogram_flag; // polar histograms as global array
   bool stress_flag;
-  ScalarInput area_in;     // Love-Weber area: a number or v_name
-  int area_ivar;           // ... the variable, found at init
-  std::string idregion;    // empty: no region
+  ScalarInput area_in;  // Love-Weber area: a number or v_name
+  int area_ivar;        // ... the variable, found at init
+  std::string idregion; // empty: no region
   int iregion;
 
   // LIGGGHTS' computes that report contact forces: pair/gran/local for
   // particle-particle, wall/gran/local for particle-(mesh) wall contacts
   struct ContactSource {
     const char *style;
-    char *id = nullptr;    // the user's compute, or ours (ID_contacts, ID_walls)
+    char *id = nullptr; // the user's compute, or ours (ID_contacts, ID_walls)
     class ComputePairGranLocal *compute = nullptr;
   };
   ContactSource pairs{"pair/gran/local"}, walls{"wall/gran/local"};
-  bool walls_flag;         // count particle-wall contacts
+  bool walls_flag; // count particle-wall contacts
 
-  bigint gathered_step;    // timestep of the contact list below
-  std::vector<fabric::Contact> contact_list;   // all contacts, identical on every rank
+  bigint gathered_step;                      // timestep of the contact list below
+  std::vector<fabric::Contact> contact_list; // all contacts, identical on every rank
   std::vector<double> sendbuf, recvbuf;
   std::vector<std::pair<uint64_t, int>> sort_keys;
   struct End {
     long tag;
     double angle;
   };
-  std::vector<End> ends;                   // both ends of every contact
-  std::vector<long> end_tag;               // the tags with contacts, ascending
-  std::vector<int> end_start;              // contact angles about end_tag[t] (CSR)
+  std::vector<End> ends;      // both ends of every contact
+  std::vector<long> end_tag;  // the tags with contacts, ascending
+  std::vector<int> end_start; // contact angles about end_tag[t] (CSR)
   std::vector<double> end_angle, angles;
   std::vector<int> recvcounts, displs;
-  long nparticles;         // particles in group (and region)
-  long no_normal;          // contacts with coincident centres (no normal)
-  int first_no_normal;     // ... the first of them in contact_list
+  long nparticles;     // particles in group (and region)
+  long no_normal;      // contacts with coincident centres (no normal)
+  int first_no_normal; // ... the first of them in contact_list
   bool warned_no_normal;
 
   int nmax_atom;
@@ -100,7 +118,7 @@ class ComputeFabric : public Compute {
   double mean_stability_index();
 };
 
-}
+} // namespace LAMMPS_NS
 
 #endif
 #endif

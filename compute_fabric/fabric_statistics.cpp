@@ -13,44 +13,56 @@ constexpr double kTwoPi = 2.0 * kPi;
 
 // ---- angles -----------------------------------------------------------------
 
-double bin_width(int nbins) { return kTwoPi / nbins; }
+double bin_width(int nbins)
+{
+  return kTwoPi / nbins;
+}
 
-double bin_centre(int bin, double width) { return (bin + 0.5) * width; }
+double bin_centre(int bin, double width)
+{
+  return (bin + 0.5) * width;
+}
 
 // Orientation of a pi-periodic quantity from its second harmonic
 // (c, s) = amplitude * (cos 2theta, sin 2theta).
-Anisotropy from_second_harmonic(double c, double s) {
+Anisotropy from_second_harmonic(double c, double s)
+{
   double theta = 0.5 * std::atan2(s, c);
-  if (theta <= -0.5 * kPi) theta += kPi;  // atan2(-0.0, c < 0) = -pi
+  if (theta <= -0.5 * kPi) theta += kPi; // atan2(-0.0, c < 0) = -pi
   return {std::hypot(c, s), theta};
 }
 
 // For a symmetric 2x2 tensor, eigenvalue gap and major-axis direction in closed form.
-Anisotropy deviator_of(const Eigen::Matrix2d& m) {
+Anisotropy deviator_of(const Eigen::Matrix2d &m)
+{
   return from_second_harmonic(m(0, 0) - m(1, 1), 2.0 * m(0, 1));
 }
 
 // ---- histogram checks -------------------------------------------------------
 
-void require_usable_bin_count(int nbins) {
+void require_usable_bin_count(int nbins)
+{
   if (nbins < 3 || nbins == 4)
     throw std::invalid_argument("fabric: nbins must be >= 3 and != 4, got " +
                                 std::to_string(nbins));
 }
 
-void require_well_formed(const Histogram& h) {
+void require_well_formed(const Histogram &h)
+{
   require_usable_bin_count(h.nbins);
   const auto n = static_cast<std::size_t>(h.nbins);
   if (h.count.size() != n || h.mean_fn.size() != n || h.mean_ft.size() != n)
     throw std::invalid_argument("fabric: histogram vectors must have nbins entries");
 }
 
-bool is_empty_bin(const Histogram& h, int bin) {
+bool is_empty_bin(const Histogram &h, int bin)
+{
   return !(h.count[static_cast<std::size_t>(bin)] > 0.0);
 }
 
 // Corrects for averaging cos 2theta over a bin instead of reading it at the centre.
-double bin_correction(double width, BinCorrection correction) {
+double bin_correction(double width, BinCorrection correction)
+{
   const double ratio = width / std::sin(width);
   return correction == BinCorrection::Unbiased ? ratio : 1.0 / ratio;
 }
@@ -58,13 +70,14 @@ double bin_correction(double width, BinCorrection correction) {
 // ---- force statistics -------------------------------------------------------
 
 struct BinnedForceSums {
-  double f0_numerator = 0.0;   // sum' fn(g) dth
-  double covered_angle = 0.0;  // n' dth
-  double fn_cos = 0.0, fn_sin = 0.0;  // sum' fn(g) {cos,sin} 2theta_g dth
-  double ft_cos = 0.0, ft_sin = 0.0;  // sum' ft(g) {cos,sin} 2theta_g dth
+  double f0_numerator = 0.0;         // sum' fn(g) dth
+  double covered_angle = 0.0;        // n' dth
+  double fn_cos = 0.0, fn_sin = 0.0; // sum' fn(g) {cos,sin} 2theta_g dth
+  double ft_cos = 0.0, ft_sin = 0.0; // sum' ft(g) {cos,sin} 2theta_g dth
 };
 
-BinnedForceSums sum_non_empty_bins(const Histogram& h) {
+BinnedForceSums sum_non_empty_bins(const Histogram &h)
+{
   const double width = bin_width(h.nbins);
   BinnedForceSums sums;
   for (int g = 0; g < h.nbins; ++g) {
@@ -82,13 +95,15 @@ BinnedForceSums sum_non_empty_bins(const Histogram& h) {
 }
 
 // Fabric density relative to isotropy, 1 + a cos 2(theta - theta_a).
-double relative_fabric_density(const Contact& c, const Anisotropy& fabric) {
+double relative_fabric_density(const Contact &c, const Anisotropy &fabric)
+{
   const double twice_angle = 2.0 * std::atan2(c.ny, c.nx);
   return 1.0 + fabric.a * std::cos(twice_angle - 2.0 * fabric.theta);
 }
 
 // n (x) t with t = (-ny, nx); only its symmetric part carries the a_t rose.
-Eigen::Matrix2d symmetric_normal_tangent(const Contact& c) {
+Eigen::Matrix2d symmetric_normal_tangent(const Contact &c)
+{
   Eigen::Matrix2d m;
   m(0, 0) = -c.nx * c.ny;
   m(1, 1) = c.nx * c.ny;
@@ -96,25 +111,27 @@ Eigen::Matrix2d symmetric_normal_tangent(const Contact& c) {
   return m;
 }
 
-Eigen::Matrix2d normal_dyad(const Contact& c) {
+Eigen::Matrix2d normal_dyad(const Contact &c)
+{
   Eigen::Matrix2d m;
   m << c.nx * c.nx, c.nx * c.ny, c.nx * c.ny, c.ny * c.ny;
   return m;
 }
 
-void add_to_bin(Histogram& h, int bin, const Contact& c) {
+void add_to_bin(Histogram &h, int bin, const Contact &c)
+{
   const auto i = static_cast<std::size_t>(bin);
   h.count[i] += 1.0;
-  h.mean_fn[i] += c.fn;  // sums for now; turned into means once all are in
+  h.mean_fn[i] += c.fn; // sums for now; turned into means once all are in
   h.mean_ft[i] += c.ft;
 }
 
-}  // namespace
+} // namespace
 
-Contact make_contact(long a, long b, double lx, double ly, double fx, double fy,
-                     double radius_sum) {
+Contact make_contact(long a, long b, double lx, double ly, double fx, double fy, double radius_sum)
+{
   Contact c{a, b, 0.0, 0.0, 0.0, 0.0, lx, ly};
-  const double length = std::hypot(lx, ly);  // no underflow for |l| ~ 1e-300
+  const double length = std::hypot(lx, ly); // no underflow for |l| ~ 1e-300
   if (!std::isfinite(length) || !(length > kCoincidentFraction * radius_sum)) return c;
   c.nx = lx / length;
   c.ny = ly / length;
@@ -123,28 +140,31 @@ Contact make_contact(long a, long b, double lx, double ly, double fx, double fy,
   return c;
 }
 
-bool has_normal(const Contact& c) {
+bool has_normal(const Contact &c)
+{
   return std::isfinite(c.nx) && std::isfinite(c.ny) && (c.nx != 0.0 || c.ny != 0.0);
 }
 
-int angle_bin(double angle, int nbins) {
+int angle_bin(double angle, int nbins)
+{
   if (!std::isfinite(angle) || nbins < 1) return -1;
-  double wrapped = std::fmod(angle, kTwoPi);  // exact
+  double wrapped = std::fmod(angle, kTwoPi); // exact
   if (wrapped < 0.0) wrapped += kTwoPi;
-  if (wrapped >= kTwoPi) wrapped = 0.0;  // -tiny + 2pi can round up to 2pi
+  if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
   const int bin = static_cast<int>(wrapped / bin_width(nbins));
-  return bin < nbins ? bin : nbins - 1;  // wrapped / width can round up to nbins
+  return bin < nbins ? bin : nbins - 1; // wrapped / width can round up to nbins
 }
 
-Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins) {
+Histogram polar_histogram(const std::vector<Contact> &contacts, int nbins)
+{
   require_usable_bin_count(nbins);
   const auto n = static_cast<std::size_t>(nbins);
   Histogram h{nbins, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0),
               std::vector<double>(n, 0.0), 0};
 
-  for (const Contact& c : contacts) {
+  for (const Contact &c : contacts) {
     if (!has_normal(c)) continue;
-    for (double angle : {std::atan2(c.ny, c.nx), std::atan2(-c.ny, -c.nx)}) {  // same fn, ft
+    for (double angle : {std::atan2(c.ny, c.nx), std::atan2(-c.ny, -c.nx)}) { // same fn, ft
       const int bin = angle_bin(angle, nbins);
       if (bin >= 0) add_to_bin(h, bin, c);
     }
@@ -160,7 +180,8 @@ Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins) {
   return h;
 }
 
-Anisotropy normal_anisotropy_histogram(const Histogram& h, BinCorrection correction) {
+Anisotropy normal_anisotropy_histogram(const Histogram &h, BinCorrection correction)
+{
   require_well_formed(h);
   const double width = bin_width(h.nbins);
   double total = 0.0, cos_sum = 0.0, sin_sum = 0.0;
@@ -176,10 +197,11 @@ Anisotropy normal_anisotropy_histogram(const Histogram& h, BinCorrection correct
   return from_second_harmonic(prefactor * cos_sum, prefactor * sin_sum);
 }
 
-Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts) {
+Anisotropy normal_anisotropy_tensor(const std::vector<Contact> &contacts)
+{
   Eigen::Matrix2d phi = Eigen::Matrix2d::Zero();
   long n = 0;
-  for (const Contact& c : contacts) {
+  for (const Contact &c : contacts) {
     if (!has_normal(c)) continue;
     phi += normal_dyad(c);
     ++n;
@@ -190,7 +212,8 @@ Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts) {
   return {2.0 * gap.a, gap.theta};
 }
 
-ForceAnisotropy force_anisotropy_histogram(const Histogram& h, BinCorrection correction) {
+ForceAnisotropy force_anisotropy_histogram(const Histogram &h, BinCorrection correction)
+{
   require_well_formed(h);
   const BinnedForceSums sums = sum_non_empty_bins(h);
   ForceAnisotropy result{0.0, 0.0, 0.0, 0.0, 0.0, h.empty_bins};
@@ -200,8 +223,7 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram& h, BinCorrection cor
 
   const double scale = bin_correction(bin_width(h.nbins), correction) / (kPi * f0);
   const Anisotropy normal = from_second_harmonic(scale * sums.fn_cos, scale * sums.fn_sin);
-  const Anisotropy tangential =
-      from_second_harmonic(-scale * sums.ft_sin, scale * sums.ft_cos);
+  const Anisotropy tangential = from_second_harmonic(-scale * sums.ft_sin, scale * sums.ft_cos);
   result.an = normal.a;
   result.theta_n = normal.theta;
   result.f0 = f0;
@@ -210,13 +232,14 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram& h, BinCorrection cor
   return result;
 }
 
-ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
-                                        const Anisotropy& fabric) {
+ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
+                                        const Anisotropy &fabric)
+{
   ForceAnisotropy result{0.0, 0.0, 0.0, 0.0, 0.0, 0};
   Eigen::Matrix2d chi_n = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d chi_t = Eigen::Matrix2d::Zero();
   long with_normal = 0;
-  for (const Contact& c : contacts) {
+  for (const Contact &c : contacts) {
     if (!has_normal(c)) continue;
     ++with_normal;
     const double density = relative_fabric_density(c, fabric);
@@ -241,7 +264,8 @@ ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
   return result;
 }
 
-Coordination coordination(const std::vector<int>& contacts_per_particle) {
+Coordination coordination(const std::vector<int> &contacts_per_particle)
+{
   Coordination result{0.0, 0.0, 0, 0, 0, 0};
   for (int count : contacts_per_particle) {
     if (count < 0) throw std::invalid_argument("fabric: negative contact count");
@@ -260,10 +284,11 @@ Coordination coordination(const std::vector<int>& contacts_per_particle) {
   return result;
 }
 
-Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double area) {
+Eigen::Matrix2d love_weber_stress(const std::vector<Contact> &contacts, double area)
+{
   if (!(area > 0.0)) throw std::invalid_argument("fabric: Love-Weber area must be > 0");
   Eigen::Matrix2d sigma = Eigen::Matrix2d::Zero();
-  for (const Contact& c : contacts) {
+  for (const Contact &c : contacts) {
     if (!has_normal(c)) continue;
     const Eigen::Vector2d normal(c.nx, c.ny);
     const Eigen::Vector2d tangent(-c.ny, c.nx);
@@ -273,4 +298,4 @@ Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double a
   return sigma / area;
 }
 
-}  // namespace fabric
+} // namespace fabric

@@ -13,9 +13,9 @@ namespace fabric {
 // One contact, counted once. Angular statistics add the -n copy themselves, so a
 // caller must not list a contact twice (newton off: both ranks see it).
 struct Contact {
-  long a, b;      // particle tags; b = -1 for a wall contact
-  double nx, ny;  // unit normal from a to b (wall: from a's centre towards the wall)
-  double fn;      // normal force, > 0 in compression
+  long a, b;     // particle tags; b = -1 for a wall contact
+  double nx, ny; // unit normal from a to b (wall: from a's centre towards the wall)
+  double fn;     // normal force, > 0 in compression
   // Signed force on b along t = (-ny, nx) (n turned by +90 deg). Seen from b the
   // normal and t both flip and so does the force, so ft is the same from either
   // side: the -n copy in a histogram carries the same ft.
@@ -39,12 +39,11 @@ constexpr double kCoincidentFraction = 1e-12;
 // Without a normal (|l| <= kCoincidentFraction * radius_sum, l not finite, or
 // radius_sum NaN) nx = ny = fn = ft = 0, whatever the force (LIGGGHTS' contact
 // models return NaN forces for coincident centres).
-Contact make_contact(long a, long b, double lx, double ly, double fx, double fy,
-                     double radius_sum);
+Contact make_contact(long a, long b, double lx, double ly, double fx, double fy, double radius_sum);
 
 // False when the contact has no normal: nx or ny not finite, or both 0. Such
 // contacts are skipped by polar_histogram, the tensors and love_weber_stress.
-bool has_normal(const Contact& c);
+bool has_normal(const Contact &c);
 
 // The bin among nbins (width 2 pi / nbins, bin 0 from +x) of an angle in radians of
 // any range, wrapped to [0, 2 pi); -1 (no bin) for a NaN or infinite angle or
@@ -75,20 +74,20 @@ struct Histogram {
 };
 
 // Each contact enters twice (n and -n), so the rose is point-symmetric and
-// sum(count) = 2 x contacts with a normal (has_normal). nbins must be >= 3 and != 4: with 1 or 2 bins
-// sin(dth) = 0, and with 4 bins every centre has cos 2theta = 0, so the
-// cos 2theta_a part of the fabric is invisible. Throws std::invalid_argument.
-Histogram polar_histogram(const std::vector<Contact>& contacts, int nbins);
+// sum(count) = 2 x contacts with a normal (has_normal). nbins must be >= 3 and != 4: with 1 or 2
+// bins sin(dth) = 0, and with 4 bins every centre has cos 2theta = 0, so the cos 2theta_a part of
+// the fabric is invisible. Throws std::invalid_argument.
+Histogram polar_histogram(const std::vector<Contact> &contacts, int nbins);
 
 // Rothenburg & Bathurst (1989) from binned counts, N = sum of counts.
 // Empty histogram -> {0, 0}. Throws std::invalid_argument on a malformed histogram.
-Anisotropy normal_anisotropy_histogram(const Histogram& h,
+Anisotropy normal_anisotropy_histogram(const Histogram &h,
                                        BinCorrection correction = BinCorrection::Unbiased);
 
 // phi = (1/N) sum n (x) n over the N contacts with a normal; a = 2 (phi1 - phi2),
 // theta along the major axis. Binning-free and the exact limit of the histogram
 // estimate. No contacts with a normal -> {0, 0}.
-Anisotropy normal_anisotropy_tensor(const std::vector<Contact>& contacts);
+Anisotropy normal_anisotropy_tensor(const std::vector<Contact> &contacts);
 
 // Mean-force rose f_n(th) = f0 [1 + an cos 2(th - theta_n)] and tangential rose
 // f_t(th) = -f0 at sin 2(th - theta_t) (Rothenburg & Bathurst). an, at >= 0.
@@ -110,18 +109,18 @@ struct ForceAnisotropy {
 //   at sin 2theta_t =  c/(pi f0) sum' ft(g) cos 2theta_g dth
 //   at cos 2theta_t = -c/(pi f0) sum' ft(g) sin 2theta_g dth
 // with c = dth/sin dth (Unbiased) or sin dth/dth (Published).
-ForceAnisotropy force_anisotropy_histogram(const Histogram& h,
+ForceAnisotropy force_anisotropy_histogram(const Histogram &h,
                                            BinCorrection correction = BinCorrection::Unbiased);
 
 // Dividing each contact by the fitted fabric density w = 1 + a cos 2(th - theta_a)
 // removes the fabric's own anisotropy from the force tensors:
 //   chi_n = (1/N) sum fn n (x) n / w;       f0 = tr chi_n;  an = 2 (chi_n1 - chi_n2) / f0
 //   chi_t = sym((1/N) sum ft n (x) t / w);  at = 2 (chi_t1 - chi_t2) / f0
-// over the N contacts with a normal; theta_n, theta_t along the major eigenvectors. For the model roses above this
-// returns (an, theta_n, f0, at, theta_t) exactly. The model density is only valid
+// over the N contacts with a normal; theta_n, theta_t along the major eigenvectors. For the model
+// roses above this returns (an, theta_n, f0, at, theta_t) exactly. The model density is only valid
 // for a < 1; contacts where w <= 0 are skipped (the model cannot describe them).
-ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact>& contacts,
-                                        const Anisotropy& fabric);
+ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
+                                        const Anisotropy &fabric);
 
 // n_contacts is sum(contacts_per_particle), i.e. 2 N_c when only particle-particle
 // contacts are counted; whether a wall contact adds 1 is the caller's choice.
@@ -137,13 +136,13 @@ struct Coordination {
 
 // Cn = sum/Np; Zm = (sum - N1)/(Np - N0 - N1), 0 when no particle has >= 2
 // contacts. Empty input -> all zero. A negative count throws std::invalid_argument.
-Coordination coordination(const std::vector<int>& contacts_per_particle);
+Coordination coordination(const std::vector<int> &contacts_per_particle);
 
 // sigma_ij = (1/A) sum f_i l_j with f = fn n + ft t the force on b: compression
 // positive, as in soil mechanics. Not symmetric when tangential forces carry a
 // moment. Contacts without a normal are skipped (their branch vector is ~0, so
-// they carry no moment, and their force may be NaN). area is the sample area per unit thickness; area <= 0 throws
-// std::invalid_argument (check it before, e.g. as an error->all in the compute).
-Eigen::Matrix2d love_weber_stress(const std::vector<Contact>& contacts, double area);
+// they carry no moment, and their force may be NaN). area is the sample area per unit thickness;
+// area <= 0 throws std::invalid_argument (check it before, e.g. as an error->all in the compute).
+Eigen::Matrix2d love_weber_stress(const std::vector<Contact> &contacts, double area);
 
-}  // namespace fabric
+} // namespace fabric

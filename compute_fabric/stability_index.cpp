@@ -10,39 +10,43 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-double wrap_to_full_turn(double angle) {
+double wrap_to_full_turn(double angle)
+{
   double wrapped = std::fmod(angle, kTwoPi);
   if (wrapped < 0.0) wrapped += kTwoPi;
-  if (wrapped >= kTwoPi) wrapped = 0.0;  // -tiny + 2pi can round up to 2pi
+  if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
   return wrapped;
 }
 
-double circular_distance(double alpha, double beta) {
+double circular_distance(double alpha, double beta)
+{
   const double d = std::fabs(std::fmod(alpha - beta, kTwoPi));
   return std::min(d, kTwoPi - d);
 }
 
 // Misfit of the sorted contacts against the even arrangement anchored at one of them.
-double misfit_from_anchor(const std::vector<double>& sorted, std::size_t anchor) {
+double misfit_from_anchor(const std::vector<double> &sorted, std::size_t anchor)
+{
   const std::size_t n = sorted.size();
   const double spacing = kTwoPi / static_cast<double>(n);
   double total = 0.0;
-  for (std::size_t k = 1; k < n; ++k) {  // k = 0 is the anchor itself: distance 0
+  for (std::size_t k = 1; k < n; ++k) { // k = 0 is the anchor itself: distance 0
     const double ideal = sorted[anchor] + static_cast<double>(k) * spacing;
     total += circular_distance(sorted[(anchor + k) % n], ideal);
   }
   return total;
 }
 
-}  // namespace
+} // namespace
 
-double stability_index(std::vector<double> angles) {
+double stability_index(std::vector<double> angles)
+{
   // a contact without a normal (NaN angle) has no place on the circle
   angles.erase(std::remove_if(angles.begin(), angles.end(),
                               [](double angle) { return !std::isfinite(angle); }),
                angles.end());
   if (angles.size() < 2) return 1.0;
-  for (double& angle : angles) angle = wrap_to_full_turn(angle);
+  for (double &angle : angles) angle = wrap_to_full_turn(angle);
   std::sort(angles.begin(), angles.end());
 
   double smallest = std::numeric_limits<double>::infinity();
@@ -51,4 +55,4 @@ double stability_index(std::vector<double> angles) {
   return smallest / kTwoPi;
 }
 
-}  // namespace fabric
+} // namespace fabric

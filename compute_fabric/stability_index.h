@@ -15,4 +15,4 @@ namespace fabric {
 // (contacts without a normal) are left out; 0 or 1 remaining contact -> 1.
 double stability_index(std::vector<double> angles);
 
-}  // namespace fabric
+} // namespace fabric

@@ -25,7 +25,10 @@ using namespace FixConst;
 namespace {
 
 const std::string PREFIX = "Fix damping/local: ";
-std::string msg(const std::string &text) { return PREFIX + text; }
+std::string msg(const std::string &text)
+{
+  return PREFIX + text;
+}
 
 const char *const ALPHA_USAGE =
     "alpha A, the local damping coefficient, a number >= 0 and < 1 (PFC's default is 0.7)";
@@ -48,15 +51,14 @@ bool adds_no_force(const char *style)
   return false;
 }
 
-}  // namespace
+} // namespace
 
 /* ---------------------------------------------------------------------- */
 
-FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
-  Fix(lammps, narg, arg),
-  alpha(0.0), damp_torque(true), nmax(0), damping_force(nullptr)
+FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
+  : Fix(lammps, narg, arg), alpha(0.0), damp_torque(true), nmax(0), damping_force(nullptr)
 {
-  peratom_flag = 1;           // the damping force F_d of the step, per atom
+  peratom_flag = 1; // the damping force F_d of the step, per atom
   size_peratom_cols = 3;
   peratom_freq = 1;
 
@@ -76,7 +78,8 @@ FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg) :
       damp_torque = value == "yes";
       if (damp_torque && !has_rotation)
         args.bad("the atom style has no per-atom torque and angular velocity to damp "
-                 "(atom style sphere or granular has them)", "use torque no, or leave it out");
+                 "(atom style sphere or granular has them)",
+                 "use torque no, or leave it out");
       torque_given = true;
     } else {
       args.unknown("alpha, torque");
@@ -111,7 +114,8 @@ void FixDampingLocal::init()
 {
   if (strstr(update->integrate_style, "verlet") == nullptr)
     error->all(FLERR, msg(std::string("works with run_style verlet only, not ") +
-                          update->integrate_style + "; use run_style verlet").c_str());
+                          update->integrate_style + "; use run_style verlet")
+                          .c_str());
 
   int self = -1;
   for (int i = 0; i < modify->nfix; i++)
@@ -128,16 +132,21 @@ void FixDampingLocal::init()
     warned_order.insert(other->id);
     if (comm->me != 0) continue;
     if (strcmp(other->style, style) == 0)
-      error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style + ") also damps " +
-                                std::to_string(common) + " atom(s) that fix " + id + " damps: their "
-                                "force is damped twice; give the two fixes groups without common "
-                                "atoms").c_str());
+      error->warning(FLERR,
+                     msg(std::string("fix ") + other->id + " (" + other->style + ") also damps " +
+                         std::to_string(common) + " atom(s) that fix " + id +
+                         " damps: their "
+                         "force is damped twice; give the two fixes groups without common "
+                         "atoms")
+                         .c_str());
     else
       error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
                                 ") is defined after fix " + id + " and acts in post_force on " +
-                                std::to_string(common) + " atom(s) that fix " + id + " damps: "
-                                "forces it adds to them are not damped; define fix " + id +
-                                " after fix " + other->id).c_str());
+                                std::to_string(common) + " atom(s) that fix " + id +
+                                " damps: "
+                                "forces it adds to them are not damped; define fix " +
+                                id + " after fix " + other->id)
+                                .c_str());
   }
 }
 

@@ -15,7 +15,9 @@
 
 #ifdef FIX_CLASS
 
+// clang-format off
 FixStyle(damping/local,FixDampingLocal)
+// clang-format on
 
 #else
 
@@ -42,12 +44,12 @@ class FixDampingLocal : public Fix {
  private:
   double alpha;
   bool damp_torque;
-  int nmax;                             // rows allocated in damping_force
-  double **damping_force;               // F_d of the last step, owned atoms (0 outside the group)
-  std::set<std::string> warned_order;   // fixes warned about (once each) for their order
+  int nmax;                           // rows allocated in damping_force
+  double **damping_force;             // F_d of the last step, owned atoms (0 outside the group)
+  std::set<std::string> warned_order; // fixes warned about (once each) for their order
 };
 
-}
+} // namespace LAMMPS_NS
 
 #endif
 #endif

@@ -29,4 +29,4 @@ void apply_local_damping(double *f, const double *v, std::size_t n, double alpha
   for (std::size_t k = 0; k < n; k++) f[k] += local_damping_component(f[k], v[k], alpha);
 }
 
-}  // namespace damping
+} // namespace damping

@@ -27,6 +27,6 @@ void local_damping_force(const double *f, const double *v, std::size_t n, double
 // f[k] += -alpha |f[k]| sign(v[k]) for k < n: the damped force, in place.
 void apply_local_damping(double *f, const double *v, std::size_t n, double alpha);
 
-}  // namespace damping
+} // namespace damping
 
 #endif

@@ -46,57 +46,65 @@ enum { LEFT = 0, RIGHT = 1 };
 constexpr double BAND_WIDENING = 2.5;
 constexpr int MAX_WIDENINGS = 2;
 // stability guards (doc/fix_membrane2d.md, "Stability guards")
-constexpr double TIME_STEP_LIMIT = 0.3;     // x sqrt(m_min/k_n)
-constexpr double CHAIN_STEP_LIMIT = 0.025;  // chain disk displacement per step / radius
-constexpr double INERTIAL_LIMIT = 1e-3;     // quasi-static bound (GDR MiDi 2004)
-constexpr bigint INERTIAL_WINDOW = 1000;    // steps over which the platen strain rate is averaged
+constexpr double TIME_STEP_LIMIT = 0.3;    // x sqrt(m_min/k_n)
+constexpr double CHAIN_STEP_LIMIT = 0.025; // chain disk displacement per step / radius
+constexpr double INERTIAL_LIMIT = 1e-3;    // quasi-static bound (GDR MiDi 2004)
+constexpr bigint INERTIAL_WINDOW = 1000;   // steps over which the platen strain rate is averaged
 
-const char *side_name(int s) { return s == LEFT ? "left" : "right"; }
+const char *side_name(int s)
+{
+  return s == LEFT ? "left" : "right";
+}
 
 enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
-constexpr size_t WATCH_FIELDS = 6;   // tag, x, y, r, |v| dt / r, type
+constexpr size_t WATCH_FIELDS = 6; // tag, x, y, r, |v| dt / r, type
 // every auto: relations within this many D50 of their threshold are watched
 // every step; the others may flip only after a band disk moved half as far
 constexpr double WATCH_BUDGET = 0.01;
 
-std::string msg(const std::string &text) { return "Fix membrane2d: " + text; }
+std::string msg(const std::string &text)
+{
+  return "Fix membrane2d: " + text;
+}
 
-const char *const KEYWORDS[] = {"pressure", "ylo", "yhi", "sides", "band", "tolerance",
-                                "thickness", "every", "frictionless", "polyline"};
+const char *const KEYWORDS[] = {"pressure",  "ylo",       "yhi",   "sides",        "band",
+                                "tolerance", "thickness", "every", "frictionless", "polyline"};
 
 // a gap tolerance beyond this many D50 bridges real gaps between disks
 constexpr double TOLERANCE_LIMIT = 0.25;
 // a band narrower than this many D50 is cut into too many slices (membrane_band.cpp)
 constexpr double BAND_MIN = 0.01;
 
-}  // namespace
+} // namespace
 
 /* ---------------------------------------------------------------------- */
 
-FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
-  Fix(lammps, narg, arg),
-  thickness(1.0), band_width(-1.0), search_width(0.0), tolerance(-1.0), band_given(-1.0), tolerance_given(-1.0), d50(0.0), density(0.0), detect_every(0),
-  membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
-  pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true),
-  redetections(0), failures(0), widenings(0), changes(0), chain_step{0.0, -1}, inertial(0.0), inertial_step0(-1),
-  inertial_height0(0.0), warned_chain_step(false), warned_inertial(false), inertial_above_before(false), nmax_flag(0)
+FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
+  : Fix(lammps, narg, arg), thickness(1.0), band_width(-1.0), search_width(0.0), tolerance(-1.0),
+    band_given(-1.0), tolerance_given(-1.0), d50(0.0), density(0.0), detect_every(0),
+    membrane_type(0), polyline_every(0), polyline_file(nullptr), polyline_fp(nullptr),
+    pressure(0.0), ylo(0.0), yhi(0.0), force_detection(true), redetections(0), failures(0),
+    widenings(0), changes(0), chain_step{0.0, -1}, inertial(0.0), inertial_step0(-1),
+    inertial_height0(0.0), warned_chain_step(false), warned_inertial(false),
+    inertial_above_before(false), nmax_flag(0)
 {
-  if (domain->dimension != 2)
-    error->all(FLERR, msg("requires dimension 2").c_str());
-  if (!atom->radius_flag)
-    error->all(FLERR, msg("requires atom style sphere (granular)").c_str());
+  if (domain->dimension != 2) error->all(FLERR, msg("requires dimension 2").c_str());
+  if (!atom->radius_flag) error->all(FLERR, msg("requires atom style sphere (granular)").c_str());
   if (atom->tag_enable == 0 || atom->map_style == 0)
     error->all(FLERR, msg("requires atom IDs and an atom map (atom_modify map array)").c_str());
 
   if (domain->xperiodic)
-    error->all(FLERR, msg("the box is periodic in x: the sample would wrap across the boundary and "
-                          "its outermost disks have no left and right; use boundary f f p (or m m p)").c_str());
+    error->all(FLERR,
+               msg("the box is periodic in x: the sample would wrap across the boundary and "
+                   "its outermost disks have no left and right; use boundary f f p (or m m p)")
+                   .c_str());
 
   sides[LEFT].side = Side::Left;
   sides[RIGHT].side = Side::Right;
   sides[LEFT].active = sides[RIGHT].active = true;
 
-  const char *usage_pressure = "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
+  const char *usage_pressure =
+      "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
   const char *usage_ylo = "ylo Y: the bottom platen surface (length), a number or v_name";
   const char *usage_yhi = "yhi Y: the top platen surface (length), a number or v_name";
   bool have_pressure = false, have_ylo = false, have_yhi = false;
@@ -117,24 +125,31 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
       have_yhi = true;
     } else if (key == "sides") {
       const std::string v = args.value("sides left|right|both");
-      if (v != "left" && v != "right" && v != "both") args.bad("must be left, right or both", "sides left|right|both");
+      if (v != "left" && v != "right" && v != "both")
+        args.bad("must be left, right or both", "sides left|right|both");
       sides[LEFT].active = v != "right";
       sides[RIGHT].active = v != "left";
     } else if (key == "band") {
       band_width = args.positive("band W: the width of the side bands (length), default 4 x D50");
       band_given = band_width;
     } else if (key == "tolerance") {
-      tolerance = args.non_negative("tolerance G: the largest gap (length) counted as a contact, default 0.02 x D50");
+      tolerance = args.non_negative(
+          "tolerance G: the largest gap (length) counted as a contact, default 0.02 x D50");
       tolerance_given = tolerance;
     } else if (key == "thickness") {
       thickness = args.positive("thickness T: the out-of-plane thickness (length), default 1");
     } else if (key == "every") {
-      const char *usage = "every auto|N: detect when the chain can have changed (auto) or every N >= 1 steps";
+      const char *usage =
+          "every auto|N: detect when the chain can have changed (auto) or every N >= 1 steps";
       const char *value = args.value(usage);
-      detect_every = strcmp(value, "auto") == 0 ? 0 : static_cast<int>(args.to_integer(value, 1, 1000000000L, usage));
+      detect_every = strcmp(value, "auto") == 0
+                         ? 0
+                         : static_cast<int>(args.to_integer(value, 1, 1000000000L, usage));
     } else if (key == "frictionless") {
-      membrane_type = static_cast<int>(args.integer(1, atom->ntypes,
-          "frictionless T: the atom type chain disks take (its coefficientFriction with every type is 0)"));
+      membrane_type =
+          static_cast<int>(args.integer(1, atom->ntypes,
+                                        "frictionless T: the atom type chain disks take (its "
+                                        "coefficientFriction with every type is 0)"));
     } else if (key == "polyline") {
       const char *usage = "polyline N FILE: write the chains every N >= 1 steps to FILE";
       polyline_every = args.integer(1, 1000000000L, usage);
@@ -162,7 +177,7 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
   size_peratom_cols = 0;
   peratom_freq = 1;
   restart_global = 1;
-  restart_peratom = 1;   // only to give chain disks their frictionless type back after packing
+  restart_peratom = 1; // only to give chain disks their frictionless type back after packing
   atom->add_callback(1);
   vector_atom = nullptr;
   std::fill(vector_values, vector_values + VECTOR_SIZE, 0.0);
@@ -178,7 +193,8 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg) :
     if (reason[0])
       error->all(FLERR, keyword_message(msg(""), "polyline", polyline_file,
                                         std::string("cannot open the file for writing (") + reason +
-                                        "); check that its folder exists and is writable").c_str());
+                                            "); check that its folder exists and is writable")
+                            .c_str());
   }
 }
 
@@ -219,12 +235,14 @@ void FixMembrane2d::init()
     for (int j = 1; j <= ntypes; j++) {
       const double value = mu->compute_array(membrane_type - 1, j - 1);
       if (value != 0.0)
-        error->all(FLERR, msg("coefficientFriction of the frictionless type " + std::to_string(membrane_type) +
-                              " with type " + std::to_string(j) + " is " + std::to_string(value) +
-                              ", it must be 0").c_str());
+        error->all(FLERR, msg("coefficientFriction of the frictionless type " +
+                              std::to_string(membrane_type) + " with type " + std::to_string(j) +
+                              " is " + std::to_string(value) + ", it must be 0")
+                              .c_str());
     }
   } else if (comm->me == 0) {
-    error->warning(FLERR, msg("no 'frictionless' type given: chain disks keep their friction").c_str());
+    error->warning(FLERR,
+                   msg("no 'frictionless' type given: chain disks keep their friction").c_str());
   }
 
   check_other_membranes();
@@ -235,7 +253,7 @@ void FixMembrane2d::init()
   d50 = grains.d50;
   density = grains.density;
   if (band_width <= 0.0) band_width = 4.0 * d50;
-  if (search_width <= 0.0) search_width = band_width;   // a widened band is kept (detect_chains)
+  if (search_width <= 0.0) search_width = band_width; // a widened band is kept (detect_chains)
   if (tolerance < 0.0) tolerance = 0.02 * d50;
   check_lengths();
   // chain disks are pushed by the membrane on top of their contacts: an
@@ -259,10 +277,12 @@ void FixMembrane2d::check_other_membranes()
     MPI_Allreduce(&shared, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
     const bool first = f < modify->find_fix(id);
     if (total > 0)
-      error->all(FLERR, msg(std::string("fixes '") + (first ? other->id : id) + "' and '" + (first ? id : other->id) +
-                            "' are both membrane2d on " +
-                            std::to_string(total) + " disks: one membrane per sample (unfix one; "
-                            "two samples need groups with no disk in common)").c_str());
+      error->all(FLERR, msg(std::string("fixes '") + (first ? other->id : id) + "' and '" +
+                            (first ? id : other->id) + "' are both membrane2d on " +
+                            std::to_string(total) +
+                            " disks: one membrane per sample (unfix one; "
+                            "two samples need groups with no disk in common)")
+                            .c_str());
   }
 }
 
@@ -276,9 +296,12 @@ void FixMembrane2d::check_lengths()
 {
   if (band_width < BAND_MIN * d50)
     error->all(FLERR, keyword_message(msg(""), "band", number_text(band_width),
-                                      "is " + number_text(band_width / d50) + " x D50 (D50 = " + number_text(d50) +
-                                      "); the band is a width in distance units, at least " + number_text(BAND_MIN) +
-                                      " x D50 (default 4 x D50 = " + number_text(4.0 * d50) + ")").c_str());
+                                      "is " + number_text(band_width / d50) +
+                                          " x D50 (D50 = " + number_text(d50) +
+                                          "); the band is a width in distance units, at least " +
+                                          number_text(BAND_MIN) + " x D50 (default 4 x D50 = " +
+                                          number_text(4.0 * d50) + ")")
+                          .c_str());
   if (!(tolerance > TOLERANCE_LIMIT * d50)) return;
   char buf[512];
   snprintf(buf, sizeof(buf),
@@ -295,10 +318,12 @@ void FixMembrane2d::evaluate_platens()
   ylo = ylo_in.evaluate_checked(lmp, msg(""), "ylo", false);
   yhi = yhi_in.evaluate_checked(lmp, msg(""), "yhi", false);
   if (!(ylo < yhi))
-    error->all(FLERR, keyword_message(msg(""), "ylo", ylo_in.text(),
-                                      "is " + number_text(ylo) + ", not below yhi = " + number_text(yhi) +
-                                      " at step " + std::to_string(update->ntimestep) +
-                                      "; ylo is the bottom platen surface, yhi the top one").c_str());
+    error->all(FLERR,
+               keyword_message(msg(""), "ylo", ylo_in.text(),
+                               "is " + number_text(ylo) + ", not below yhi = " + number_text(yhi) +
+                                   " at step " + std::to_string(update->ntimestep) +
+                                   "; ylo is the bottom platen surface, yhi the top one")
+                   .c_str());
 }
 
 void FixMembrane2d::check_platens()
@@ -313,13 +338,19 @@ void FixMembrane2d::check_platens()
   MPI_Allreduce(&lo, &glo, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(&hi, &ghi, 1, MPI_DOUBLE, MPI_MAX, world);
   if (glo < ylo)
-    error->all(FLERR, keyword_message(msg(""), "ylo", ylo_in.text(),
-                                      "is " + number_text(ylo) + ", above the lowest disk centre of the group (y = " +
-                                      number_text(glo) + "); the platens must enclose the sample").c_str());
+    error->all(FLERR,
+               keyword_message(msg(""), "ylo", ylo_in.text(),
+                               "is " + number_text(ylo) +
+                                   ", above the lowest disk centre of the group (y = " +
+                                   number_text(glo) + "); the platens must enclose the sample")
+                   .c_str());
   if (ghi > yhi)
-    error->all(FLERR, keyword_message(msg(""), "yhi", yhi_in.text(),
-                                      "is " + number_text(yhi) + ", below the highest disk centre of the group (y = " +
-                                      number_text(ghi) + "); the platens must enclose the sample").c_str());
+    error->all(FLERR,
+               keyword_message(msg(""), "yhi", yhi_in.text(),
+                               "is " + number_text(yhi) +
+                                   ", below the highest disk centre of the group (y = " +
+                                   number_text(ghi) + "); the platens must enclose the sample")
+                   .c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -370,7 +401,8 @@ std::uint64_t FixMembrane2d::group_checksum()
   std::uint64_t sum = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit)
-      sum += membrane::disk_checksum(atom->tag[i], atom->type[i], atom->x[i][0], atom->x[i][1], atom->radius[i]);
+      sum += membrane::disk_checksum(atom->tag[i], atom->type[i], atom->x[i][0], atom->x[i][1],
+                                     atom->radius[i]);
   std::uint64_t total = 0;
   MPI_Allreduce(&sum, &total, 1, MPI_UINT64_T, MPI_SUM, world);
   return total;
@@ -407,12 +439,12 @@ void FixMembrane2d::pre_force(int)
     detect = detect_every == 0 && chains_may_have_changed();
   }
   if (detect) {
-    force_detection = false;   // detect_chains() sets it again after widening the band
+    force_detection = false; // detect_chains() sets it again after widening the band
     detect_chains();
     ylo_detected = ylo;
     yhi_detected = yhi;
     build_watch_list();
-    gather_watched();   // the new chain's positions and speeds
+    gather_watched(); // the new chain's positions and speeds
   }
   // after a run or a restart write the chain disks wear their own types
   if (!types_applied) apply_types();
@@ -430,8 +462,8 @@ bool FixMembrane2d::chains_may_have_changed()
   const double budget = WATCH_BUDGET * d50;
   if (2.0 * band_displacement >= budget || band_displacement + platen_move >= budget) return true;
   for (SideState &s : sides)
-    if (s.active && membrane::watched_relation_changed(s.watch, s.now, s.side, membrane::Platens{ylo, yhi},
-                                                       tolerance))
+    if (s.active && membrane::watched_relation_changed(s.watch, s.now, s.side,
+                                                       membrane::Platens{ylo, yhi}, tolerance))
       return true;
   return false;
 }
@@ -471,8 +503,11 @@ void FixMembrane2d::gather_bands(double width)
       if (!sides[k].active ||
           !sides[k].slices.contains_in_slice(slice_of_atom[i], x[i][0], radius[i], width))
         continue;
-      const double rec[BAND_FIELDS] = {static_cast<double>(k), static_cast<double>(atom->tag[i]),
-                                       x[i][0], x[i][1], radius[i],
+      const double rec[BAND_FIELDS] = {static_cast<double>(k),
+                                       static_cast<double>(atom->tag[i]),
+                                       x[i][0],
+                                       x[i][1],
+                                       radius[i],
                                        static_cast<double>(atom->type[i])};
       sendbuf.insert(sendbuf.end(), rec, rec + BAND_FIELDS);
     }
@@ -537,15 +572,19 @@ void FixMembrane2d::chain_lost(int k)
 {
   SideState &s = sides[k];
   failures++;
-  s.watch.always = true;   // search again at the next step
+  s.watch.always = true; // search again at the next step
   if (s.chain_tags.empty())
-    error->all(FLERR, msg(std::string("no chain of touching particles from the bottom to the top platen on the ") +
-                          side_name(k) + " side at step " + std::to_string(update->ntimestep) + ": " +
-                          result.failure + "; check ylo/yhi, the band width and the tolerance").c_str());
+    error->all(FLERR,
+               msg(std::string(
+                       "no chain of touching particles from the bottom to the top platen on the ") +
+                   side_name(k) + " side at step " + std::to_string(update->ntimestep) + ": " +
+                   result.failure + "; check ylo/yhi, the band width and the tolerance")
+                   .c_str());
   if (!s.warned && comm->me == 0) {
     error->warning(FLERR, msg(std::string("chain lost on the ") + side_name(k) + " side at step " +
                               std::to_string(update->ntimestep) + " (" + result.failure +
-                              "): keeping the previous chain; counted in f_ID[12], warned once").c_str());
+                              "): keeping the previous chain; counted in f_ID[12], warned once")
+                              .c_str());
   }
   s.warned = true;
 }
@@ -568,7 +607,8 @@ void FixMembrane2d::accept_chain(int k)
   }
   if (detect_every == 0) {
     // what this search depended on, on the band it searched (a wider band may follow)
-    membrane::watch_detection(s.band, result, membrane::Platens{ylo, yhi}, tolerance, WATCH_BUDGET * d50, s.watch);
+    membrane::watch_detection(s.band, result, membrane::Platens{ylo, yhi}, tolerance,
+                              WATCH_BUDGET * d50, s.watch);
     s.watch_band = s.band;
     s.now = s.band;
   }
@@ -642,7 +682,8 @@ void FixMembrane2d::apply_types()
   if (membrane_type <= 0) return;
   for (SideState &s : sides)
     for (size_t c = 0; c < s.chain_disks.size(); c++)
-      if (s.chain_types[c] != membrane_type) observed_type.emplace(s.chain_disks[c].tag, s.chain_types[c]);
+      if (s.chain_types[c] != membrane_type)
+        observed_type.emplace(s.chain_disks[c].tag, s.chain_types[c]);
   for (SideState &s : sides) switch_types({}, s.chain_tags);
 }
 
@@ -653,7 +694,8 @@ void FixMembrane2d::restore_types()
   types_applied = false;
 }
 
-void FixMembrane2d::switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags)
+void FixMembrane2d::switch_types(const std::vector<long> &old_tags,
+                                 const std::vector<long> &new_tags)
 {
   if (membrane_type <= 0) return;
   std::unordered_map<long, int> change;
@@ -698,7 +740,7 @@ void FixMembrane2d::build_watch_list()
       watch_list.push_back(e);
     }
     for (long tag : s.escaped_tags) {
-      WatchEntry e;   // no role: gathered only so that its loss is seen
+      WatchEntry e; // no role: gathered only so that its loss is seen
       e.tag = tag;
       watch_list.push_back(e);
     }
@@ -717,8 +759,10 @@ void FixMembrane2d::build_watch_list()
   for (size_t k = 0; k < watch_list.size(); k++) {
     if (n > 0 && watch_list[n - 1].tag == watch_list[k].tag) {
       for (int side = LEFT; side <= RIGHT; side++) {
-        watch_list[n - 1].chain_index[side] = std::max(watch_list[n - 1].chain_index[side], watch_list[k].chain_index[side]);
-        watch_list[n - 1].band_index[side] = std::max(watch_list[n - 1].band_index[side], watch_list[k].band_index[side]);
+        watch_list[n - 1].chain_index[side] =
+            std::max(watch_list[n - 1].chain_index[side], watch_list[k].chain_index[side]);
+        watch_list[n - 1].band_index[side] =
+            std::max(watch_list[n - 1].band_index[side], watch_list[k].band_index[side]);
       }
     } else {
       watch_list[n++] = watch_list[k];
@@ -758,9 +802,13 @@ void FixMembrane2d::gather_watched()
     const int i = atom->map(static_cast<int>(tag));
     if (i < 0 || i >= atom->nlocal) continue;
     const double *v = atom->v[i];
-    const double rec[WATCH_FIELDS] = {static_cast<double>(tag), atom->x[i][0], atom->x[i][1], atom->radius[i],
-                                      stability::step_fraction(v[0], v[1], update->dt, atom->radius[i]),
-                                      static_cast<double>(atom->type[i])};
+    const double rec[WATCH_FIELDS] = {
+        static_cast<double>(tag),
+        atom->x[i][0],
+        atom->x[i][1],
+        atom->radius[i],
+        stability::step_fraction(v[0], v[1], update->dt, atom->radius[i]),
+        static_cast<double>(atom->type[i])};
     sendbuf.insert(sendbuf.end(), rec, rec + WATCH_FIELDS);
   }
   const double trailer[WATCH_FIELDS] = {-1.0, local_displacement, 0.0, 0.0, 0.0, 0.0};
@@ -768,15 +816,19 @@ void FixMembrane2d::gather_watched()
   allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
 
   if (recvbuf.size() != WATCH_FIELDS * (watch_list.size() + comm->nprocs))
-    error->all(FLERR, msg("a chain, escaped or band disk was lost at step " + std::to_string(update->ntimestep) +
-                          " (it left the box; 'thermo_modify lost ignore' hides this): the membrane cannot "
-                          "hold a sample whose outer disks fly off; check the time step, the pressure and "
-                          "the platens").c_str());
+    error->all(
+        FLERR,
+        msg("a chain, escaped or band disk was lost at step " + std::to_string(update->ntimestep) +
+            " (it left the box; 'thermo_modify lost ignore' hides this): the membrane cannot "
+            "hold a sample whose outer disks fly off; check the time step, the pressure and "
+            "the platens")
+            .c_str());
   for (double v : recvbuf)
     if (!std::isfinite(v))
       error->all(FLERR, msg("a chain particle position is not finite at step " +
                             std::to_string(update->ntimestep) +
-                            ": the run has gone unstable; reduce the time step or the loading rate").c_str());
+                            ": the run has gone unstable; reduce the time step or the loading rate")
+                            .c_str());
   band_displacement = 0.0;
   chain_step = {0.0, -1};
   for (size_t k = 0; k < recvbuf.size(); k += WATCH_FIELDS) {
@@ -811,7 +863,8 @@ void FixMembrane2d::post_force(int)
     if (!s.active) continue;
     chain_index.resize(s.chain_disks.size());
     for (size_t k = 0; k < chain_index.size(); k++) chain_index[k] = static_cast<int>(k);
-    membrane::polyline_from_chain(s.chain_disks, chain_index, membrane::Platens{ylo, yhi}, s.polyline);
+    membrane::polyline_from_chain(s.chain_disks, chain_index, membrane::Platens{ylo, yhi},
+                                  s.polyline);
     membrane::chain_forces(s.polyline, s.side, pressure, thickness, s.forces);
     s.total.setZero();
     for (const Eigen::Vector2d &f : s.forces) s.total += f;
@@ -881,7 +934,8 @@ void FixMembrane2d::check_inertial_number()
            "the platens, d50 %.3g m, density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): "
            "the test is not quasi-static; lower the loading rate below %.3g 1/s (warned once; "
            "f_ID[16] is the current value)",
-           inertial, INERTIAL_LIMIT, step, rate, d50, density, pressure, rate * INERTIAL_LIMIT / inertial);
+           inertial, INERTIAL_LIMIT, step, rate, d50, density, pressure,
+           rate * INERTIAL_LIMIT / inertial);
   error->warning(FLERR, msg(buf).c_str());
 }
 
@@ -975,7 +1029,8 @@ void FixMembrane2d::write_polylines()
     if (!s.active) continue;
     fprintf(polyline_fp, "ITEM: POLYLINE %s %zu\n", side_name(k), s.polyline.size());
     for (const Eigen::Vector2d &p : s.polyline) fprintf(polyline_fp, "%.10g %.10g\n", p.x(), p.y());
-    fprintf(polyline_fp, "ITEM: CHAIN %s %zu (tag x y r fx fy)\n", side_name(k), s.chain_disks.size());
+    fprintf(polyline_fp, "ITEM: CHAIN %s %zu (tag x y r fx fy)\n", side_name(k),
+            s.chain_disks.size());
     for (size_t c = 0; c < s.chain_disks.size(); c++) {
       const Disk &d = s.chain_disks[c];
       fprintf(polyline_fp, "%ld %.10g %.10g %.10g %.10g %.10g\n", d.tag, d.x, d.y, d.r,
@@ -1010,7 +1065,7 @@ void FixMembrane2d::write_restart(FILE *fp)
         atom->type[i] = it->second;
         restored_for_restart[i] = 1;
       }
-  types_applied = false;   // pre_force switches the disks a region write skipped
+  types_applied = false; // pre_force switches the disks a region write skipped
   const std::uint64_t checksum = group_checksum();
 
   RestartRecordWriter out = membrane::record_writer();
@@ -1066,25 +1121,33 @@ int FixMembrane2d::pack_restart(int i, double *buf)
 
 void FixMembrane2d::restart(char *raw)
 {
-  RestartRecordReader in = membrane::record_reader(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double));
+  RestartRecordReader in = membrane::record_reader(reinterpret_cast<const double *>(raw),
+                                                   static_cast<size_t>(-1) / sizeof(double));
   if (!in.ok())
-    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " + in.error() +
-                          "; read it with the version that wrote it, or define this fix with another ID "
-                          "(the chains are then found again)").c_str());
+    error->all(FLERR,
+               msg(std::string("the restart file's state of fix ") + id +
+                   " cannot be read: " + in.error() +
+                   "; read it with the version that wrote it, or define this fix with another ID "
+                   "(the chains are then found again)")
+                   .c_str());
   const int sides_mask = static_cast<int>(in.get());
   const int type = static_cast<int>(in.get());
   const int every = static_cast<int>(in.get());
   const double band = in.get(), tol = in.get(), thick = in.get();
   const int mask_now = (sides[LEFT].active ? 1 : 0) + (sides[RIGHT].active ? 2 : 0);
-  if (sides_mask != mask_now || type != membrane_type || every != detect_every || band != band_given ||
-      tol != tolerance_given || thick != thickness) {
+  if (sides_mask != mask_now || type != membrane_type || every != detect_every ||
+      band != band_given || tol != tolerance_given || thick != thickness) {
     if (comm->me == 0)
-      error->warning(FLERR, msg(std::string("fix ") + id + " is defined otherwise than in the restart file "
-                                "(sides, frictionless, every, band, tolerance or thickness): its chains are "
-                                "found again at the first step and its counters start from 0").c_str());
+      error->warning(
+          FLERR, msg(std::string("fix ") + id +
+                     " is defined otherwise than in the restart file "
+                     "(sides, frictionless, every, band, tolerance or thickness): its chains are "
+                     "found again at the first step and its counters start from 0")
+                     .c_str());
     return;
   }
-  const std::uint64_t hi = static_cast<std::uint64_t>(in.get()), lo = static_cast<std::uint64_t>(in.get());
+  const std::uint64_t hi = static_cast<std::uint64_t>(in.get()),
+                      lo = static_cast<std::uint64_t>(in.get());
   state_checksum = (hi << 32) | lo;
   band_width = in.get();
   search_width = in.get();
@@ -1102,7 +1165,8 @@ void FixMembrane2d::restart(char *raw)
     s.now = s.watch_band;
     s.warned = in.get() != 0.0;
   }
-  for (bigint *c : {&redetections, &failures, &widenings, &changes}) *c = static_cast<bigint>(in.get());
+  for (bigint *c : {&redetections, &failures, &widenings, &changes})
+    *c = static_cast<bigint>(in.get());
   inertial = in.get();
   inertial_step0 = static_cast<bigint>(in.get());
   inertial_height0 = in.get();
@@ -1110,8 +1174,9 @@ void FixMembrane2d::restart(char *raw)
   warned_inertial = in.get() != 0.0;
   warned_chain_step = in.get() != 0.0;
   if (!in.finished())
-    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " +
-                          in.error()).c_str());
+    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id +
+                          " cannot be read: " + in.error())
+                          .c_str());
   state_kept = true;
   build_watch_list();
 }

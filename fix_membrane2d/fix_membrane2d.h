@@ -9,7 +9,9 @@
 
 #ifdef FIX_CLASS
 
+// clang-format off
 FixStyle(membrane2d,FixMembrane2d)
+// clang-format on
 
 #else
 
@@ -53,9 +55,24 @@ class FixMembrane2d : public Fix {
 
   // global vector layout (1-based in input scripts: f_ID[k])
   enum VectorIndex {
-    AREA = 0, MEAN_WIDTH, MID_WIDTH, CHAIN_LEFT, CHAIN_RIGHT, ESCAPED,
-    FX_LEFT, FY_LEFT, FX_RIGHT, FY_RIGHT, REDETECTIONS, FAILURES, PRESSURE,
-    WIDENINGS, CHAIN_STEP, INERTIAL, CHANGES, VECTOR_SIZE
+    AREA = 0,
+    MEAN_WIDTH,
+    MID_WIDTH,
+    CHAIN_LEFT,
+    CHAIN_RIGHT,
+    ESCAPED,
+    FX_LEFT,
+    FY_LEFT,
+    FX_RIGHT,
+    FY_RIGHT,
+    REDETECTIONS,
+    FAILURES,
+    PRESSURE,
+    WIDENINGS,
+    CHAIN_STEP,
+    INERTIAL,
+    CHANGES,
+    VECTOR_SIZE
   };
   enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };
 
@@ -63,82 +80,82 @@ class FixMembrane2d : public Fix {
   struct SideState {
     membrane::Side side;
     bool active = false;
-    std::vector<long> chain_tags;        // bottom -> top, kept between detections
+    std::vector<long> chain_tags; // bottom -> top, kept between detections
     std::vector<long> escaped_tags;
-    std::vector<long> forgotten_tags, forgotten_escaped;   // of the last run, when not kept
+    std::vector<long> forgotten_tags, forgotten_escaped; // of the last run, when not kept
     std::vector<double> escaped_radius;
     membrane::BandSlices slices;
-    std::vector<membrane::Disk> band;    // gathered at the last detection
-    std::vector<int> band_type;          // type of each band disk
-    std::vector<membrane::Disk> chain_disks;  // current positions, chain order
-    std::vector<int> chain_types;             // current types, chain order
-    membrane::DetectionWatch watch;            // every auto: what the last search depended on
-    std::vector<membrane::Disk> watch_band;   // the band it searched, as it was then
-    std::vector<membrane::Disk> now;          // the same, watched disks at their current positions
+    std::vector<membrane::Disk> band;        // gathered at the last detection
+    std::vector<int> band_type;              // type of each band disk
+    std::vector<membrane::Disk> chain_disks; // current positions, chain order
+    std::vector<int> chain_types;            // current types, chain order
+    membrane::DetectionWatch watch;          // every auto: what the last search depended on
+    std::vector<membrane::Disk> watch_band;  // the band it searched, as it was then
+    std::vector<membrane::Disk> now;         // the same, watched disks at their current positions
     membrane::Polyline polyline;
     std::vector<Eigen::Vector2d> forces;
     Eigen::Vector2d total{0.0, 0.0};
     bool warned = false;
   };
 
-  ScalarInput pressure_in, ylo_in, yhi_in;   // numbers or v_name
+  ScalarInput pressure_in, ylo_in, yhi_in; // numbers or v_name
   double thickness;
-  double band_width;       // <= 0: 4 x D50 of the group, set in init()
-  double search_width;     // band width of the next search: band_width, or wider once widened
-  double tolerance;        // < 0: 0.02 x D50
-  double band_given, tolerance_given;   // as given (-1: default), compared on restart
+  double band_width;   // <= 0: 4 x D50 of the group, set in init()
+  double search_width; // band width of the next search: band_width, or wider once widened
+  double tolerance;    // < 0: 0.02 x D50
+  double band_given, tolerance_given; // as given (-1: default), compared on restart
   double d50;
-  double density;          // group mass / group disk area [kg/m^2 per unit thickness]
-  int detect_every;        // 0: auto (when the chain can have changed)
-  int membrane_type;       // 0: chain disks keep their friction
+  double density;    // group mass / group disk area [kg/m^2 per unit thickness]
+  int detect_every;  // 0: auto (when the chain can have changed)
+  int membrane_type; // 0: chain disks keep their friction
   bigint polyline_every;
   char *polyline_file;
   FILE *polyline_fp;
 
-  SideState sides[2];      // LEFT, RIGHT
+  SideState sides[2]; // LEFT, RIGHT
   membrane::ChainFinder finder;
   membrane::ChainResult result;
-  std::vector<int> result_buf;         // a side's chain search, broadcast by the rank that ran it
-  std::map<long, int> observed_type;   // chain tag -> its own (not frictionless) type
+  std::vector<int> result_buf;       // a side's chain search, broadcast by the rank that ran it
+  std::map<long, int> observed_type; // chain tag -> its own (not frictionless) type
   // Between runs (and in restart files) every disk carries its own type: the
   // chain disks take the frictionless type while the fix runs.
   bool types_applied = false;
-  std::vector<char> restored_for_restart;   // local atoms write_restart gave their own type back
+  std::vector<char> restored_for_restart; // local atoms write_restart gave their own type back
   // The chain state is kept from one run to the next (and through restart
   // files) when the group's disks are as they were: same tags, types, radii
   // and positions, checked by a checksum at the start of the run.
   bool state_kept = false;
   std::uint64_t state_checksum = 0;
-  std::vector<int> slice_of_atom;      // band slice of each local disk
-  std::vector<int> chain_index;        // 0..n-1: chain_disks are already in chain order
+  std::vector<int> slice_of_atom; // band slice of each local disk
+  std::vector<int> chain_index;   // 0..n-1: chain_disks are already in chain order
 
   // disks whose positions are gathered every step: chain disks and watched disks
   struct WatchEntry {
     long tag = 0;
-    int chain_index[2] = {-1, -1};     // position in sides[k].chain_disks
-    int band_index[2] = {-1, -1};      // index in sides[k].now
+    int chain_index[2] = {-1, -1}; // position in sides[k].chain_disks
+    int band_index[2] = {-1, -1};  // index in sides[k].now
   };
-  std::vector<WatchEntry> watch_list;  // sorted by tag
-  double band_displacement = 0.0;      // largest band-disk displacement since the detection
+  std::vector<WatchEntry> watch_list; // sorted by tag
+  double band_displacement = 0.0;     // largest band-disk displacement since the detection
   double ylo_detected = 0.0, yhi_detected = 0.0;
 
   double pressure, ylo, yhi;
   bool force_detection;
   double vector_values[VECTOR_SIZE];
   bigint redetections, failures, widenings;
-  bigint changes;          // detections that changed a chain or its escapees (per side)
+  bigint changes; // detections that changed a chain or its escapees (per side)
 
   // stability guards
   struct ChainStep {
-    double fraction;       // largest |v| dt / r of a chain disk this step
+    double fraction; // largest |v| dt / r of a chain disk this step
     long tag;
   } chain_step;
-  double inertial;         // last inertial number (0 before the first window)
-  bigint inertial_step0;   // start of the current strain-rate window (-1: none)
+  double inertial;       // last inertial number (0 before the first window)
+  bigint inertial_step0; // start of the current strain-rate window (-1: none)
   double inertial_height0;
   bool warned_chain_step, warned_inertial;
-  double warned_dt = 0.0;       // the time step last warned about
-  bool inertial_above_before;   // the previous window was above the limit
+  double warned_dt = 0.0;     // the time step last warned about
+  bool inertial_above_before; // the previous window was above the limit
 
   int nmax_flag;
   std::vector<double> sendbuf, recvbuf;
@@ -169,7 +186,7 @@ class FixMembrane2d : public Fix {
   void write_polylines();
 };
 
-}
+} // namespace LAMMPS_NS
 
 #endif
 #endif

@@ -9,14 +9,16 @@ namespace membrane {
 namespace {
 
 // Identity of the MPI reduction of each side (MAX on the Right, MIN on the Left).
-double empty_extent(Side side) {
+double empty_extent(Side side)
+{
   return side == Side::Right ? std::numeric_limits<double>::lowest()
                              : std::numeric_limits<double>::max();
 }
 
-}  // namespace
+} // namespace
 
-void BandSlices::reset(Side side, Platens platens, double h) {
+void BandSlices::reset(Side side, Platens platens, double h)
+{
   side_ = side;
   ylo_ = platens.ylo;
   const double span = platens.yhi - platens.ylo;
@@ -28,22 +30,24 @@ void BandSlices::reset(Side side, Platens platens, double h) {
   near_.clear();
 }
 
-void BandSlices::finish() {
+void BandSlices::finish()
+{
   const int n = static_cast<int>(extent_.size());
   near_.assign(extent_.size(), empty_extent(side_));
   for (int i = 0; i < n; ++i)
     for (int k = std::max(0, i - 1); k <= std::min(n - 1, i + 1); ++k)
-      near_[i] = side_ == Side::Right ? std::max(near_[i], extent_[k]) : std::min(near_[i], extent_[k]);
+      near_[i] =
+          side_ == Side::Right ? std::max(near_[i], extent_[k]) : std::min(near_[i], extent_[k]);
 }
 
-
-void BandSlices::add(double x, double y, double r) {
+void BandSlices::add(double x, double y, double r)
+{
   if (extent_.empty()) return;
   add_in_slice(slice_of(y), x, r);
 }
 
-
-double BandSlices::outer_edge_near(double y) const {
+double BandSlices::outer_edge_near(double y) const
+{
   if (extent_.empty()) return empty_extent(side_);
   const int i = slice_of(y);
   if (near_.size() == extent_.size()) return near_[i];
@@ -54,9 +58,9 @@ double BandSlices::outer_edge_near(double y) const {
   return e;
 }
 
-bool BandSlices::contains(double x, double y, double r, double width) const {
+bool BandSlices::contains(double x, double y, double r, double width) const
+{
   return contains_in_slice(slice_of(y), x, r, width);
 }
 
-
-}  // namespace membrane
+} // namespace membrane

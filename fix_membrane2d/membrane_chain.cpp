@@ -14,7 +14,8 @@ constexpr double kFullTurn = 4.0;
 
 // Counter-clockwise angle of (x, y) from +x in (0, 4]; 4 stands for a full turn
 // (the direction of the back edge itself).
-double pseudo_angle(double x, double y) {
+double pseudo_angle(double x, double y)
+{
   const double s = std::abs(x) + std::abs(y);
   if (!(s > 0.0)) return kFullTurn;
   double d;
@@ -25,26 +26,29 @@ double pseudo_angle(double x, double y) {
   return d > 0.0 ? d : kFullTurn;
 }
 
-bool finite_disk(const Disk& d) {
+bool finite_disk(const Disk &d)
+{
   return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.r);
 }
 
+} // namespace
 
-}  // namespace
-
-bool ChainFinder::linked(int i, int j) const {
+bool ChainFinder::linked(int i, int j) const
+{
   int count = 0;
-  const int* nb = neighbours(i, count);
+  const int *nb = neighbours(i, count);
   return std::find(nb, nb + count, j) != nb + count;
 }
 
-int ChainFinder::degree(int i) const {
+int ChainFinder::degree(int i) const
+{
   int count = 0;
   neighbours(i, count);
   return count;
 }
 
-void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
+void ChainFinder::build_graph(const std::vector<Disk> &disks, double tol)
+{
   // Only the cell list is built here: the walk needs the neighbours of the
   // few disks it visits (the chain and its excursions), not the whole band's
   // graph, so neighbours() finds them on first use.
@@ -52,7 +56,7 @@ void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
   tol_ = tol;
   const int n = static_cast<int>(disks.size());
   double xmin = std::numeric_limits<double>::max(), ymin = xmin, rmax = 0.0;
-  for (const Disk& d : disks) {
+  for (const Disk &d : disks) {
     if (!finite_disk(d)) continue;
     xmin = std::min(xmin, d.x);
     ymin = std::min(ymin, d.y);
@@ -78,7 +82,7 @@ void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
   cell_of_.assign(n, -1);
   cell_start_.assign(nbucket_ + 1, 0);
   for (int i = 0; i < n; ++i) {
-    const Disk& d = disks[i];
+    const Disk &d = disks[i];
     if (!finite_disk(d)) continue;
     cell_x_[i] = cell_index(d.x, xmin);
     cell_y_[i] = cell_index(d.y, ymin);
@@ -96,18 +100,20 @@ void ChainFinder::build_graph(const std::vector<Disk>& disks, double tol) {
   nb_pool_.clear();
 }
 
-int ChainFinder::bucket_of(long long cx, long long cy) const {
+int ChainFinder::bucket_of(long long cx, long long cy) const
+{
   const auto ux = static_cast<unsigned long long>(cx), uy = static_cast<unsigned long long>(cy);
   return static_cast<int>(((ux * 0x9E3779B97F4A7C15ULL) ^ (uy * 0xC2B2AE3D27D4EB4FULL)) >> 20 &
                           (nbucket_ - 1));
 }
 
-const int* ChainFinder::neighbours(int i, int& count) const {
+const int *ChainFinder::neighbours(int i, int &count) const
+{
   if (nb_start_[i] < 0) {
     nb_start_[i] = static_cast<int>(nb_pool_.size());
     if (cell_of_[i] >= 0) {
-      const std::vector<Disk>& disks = *disks_;
-      const Disk& a = disks[i];
+      const std::vector<Disk> &disks = *disks_;
+      const Disk &a = disks[i];
       for (long long cy = cell_y_[i] - 1; cy <= cell_y_[i] + 1; ++cy) {
         for (long long cx = cell_x_[i] - 1; cx <= cell_x_[i] + 1; ++cx) {
           const int c = bucket_of(cx, cy);
@@ -116,7 +122,7 @@ const int* ChainFinder::neighbours(int i, int& count) const {
             // The cell test keeps a disk from being found twice when two
             // neighbour cells share a bucket.
             if (j == i || cell_x_[j] != cx || cell_y_[j] != cy) continue;
-            const Disk& b = disks[j];
+            const Disk &b = disks[j];
             const double dx = b.x - a.x, dy = b.y - a.y, d2 = dx * dx + dy * dy;
             const double reach = a.r + b.r + tol_;
             // Cheap reject with a margin; link_from is the definition (it also
@@ -133,9 +139,9 @@ const int* ChainFinder::neighbours(int i, int& count) const {
   return nb_pool_.data() + nb_start_[i];
 }
 
-int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int prev,
-                                Side side) const {
-  const Disk& p = disks[cur];
+int ChainFinder::next_neighbour(const std::vector<Disk> &disks, int cur, int prev, Side side) const
+{
+  const Disk &p = disks[cur];
   // The first disk has no predecessor: pretending it came from below makes the
   // first step the most outward one (east first on the Right).
   const double bx = prev < 0 ? 0.0 : disks[prev].x - p.x;
@@ -143,7 +149,7 @@ int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int pre
   int best = -1;
   double best_ang = 0.0;
   int count = 0;
-  const int* nb = neighbours(cur, count);
+  const int *nb = neighbours(cur, count);
   for (int k = 0; k < count; ++k) {
     const int j = nb[k];
     double ang;
@@ -154,7 +160,7 @@ int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int pre
     } else {
       const double vx = disks[j].x - p.x, vy = disks[j].y - p.y;
       double cr = bx * vy - by * vx;
-      if (side == Side::Left) cr = -cr;  // clockwise on the Left = mirror image
+      if (side == Side::Left) cr = -cr; // clockwise on the Left = mirror image
       ang = pseudo_angle(bx * vx + by * vy, cr);
     }
     if (best < 0 || ang < best_ang || (ang == best_ang && disks[j].tag < disks[best].tag)) {
@@ -165,8 +171,9 @@ int ChainFinder::next_neighbour(const std::vector<Disk>& disks, int cur, int pre
   return best;
 }
 
-bool ChainFinder::walk(const std::vector<Disk>& disks, int start, Side side, Platens platens,
-                       double tol) {
+bool ChainFinder::walk(const std::vector<Disk> &disks, int start, Side side, Platens platens,
+                       double tol)
+{
   // Forget the state of a previous (failed) walk of this find().
   for (int i : walked_) {
     chain_pos_[i] = -1;
@@ -220,8 +227,9 @@ bool ChainFinder::walk(const std::vector<Disk>& disks, int start, Side side, Pla
   return false;
 }
 
-void ChainFinder::find(const std::vector<Disk>& disks, Side side, Platens platens, double tol,
-                       ChainResult& out) {
+void ChainFinder::find(const std::vector<Disk> &disks, Side side, Platens platens, double tol,
+                       ChainResult &out)
+{
   out.ok = false;
   out.failure.clear();
   out.chain.clear();
@@ -291,7 +299,7 @@ void ChainFinder::find(const std::vector<Disk>& disks, Side side, Platens platen
   bin_segments(out.polyline, platens, 2.0 * rmax_ + std::max(tol, 0.0));
   for (int i = 0; i < n; ++i) {
     if (chain_pos_[i] >= 0) continue;
-    const Disk& d = disks[i];
+    const Disk &d = disks[i];
     if (pruned_[i]) {
       out.escaped.push_back(i);
       ++out.pruned;
@@ -302,7 +310,8 @@ void ChainFinder::find(const std::vector<Disk>& disks, Side side, Platens platen
   }
 }
 
-void ChainFinder::bin_segments(const Polyline& pl, Platens platens, double bin_height) {
+void ChainFinder::bin_segments(const Polyline &pl, Platens platens, double bin_height)
+{
   // Testing every band disk against every segment would be O(n x chain);
   // horizontal slabs make the escapee test O(n + chain).
   const std::size_t nseg = pl.empty() ? 0 : pl.size() - 1;
@@ -337,14 +346,16 @@ void ChainFinder::bin_segments(const Polyline& pl, Platens platens, double bin_h
   }
 }
 
-int ChainFinder::bin_of(double y) const {
+int ChainFinder::bin_of(double y) const
+{
   // Monotone in y, so a segment's bins always include those of any y it spans.
   const double f = std::floor((y - bin_lo_) / bin_h_);
   if (!(f > 0.0)) return 0;
   return static_cast<int>(std::min(f, static_cast<double>(nbin_ - 1)));
 }
 
-bool ChainFinder::outside_binned(double x, double y, const Polyline& pl, Side side) const {
+bool ChainFinder::outside_binned(double x, double y, const Polyline &pl, Side side) const
+{
   const int b = bin_of(y);
   // The polyline runs from ylo to yhi, so it crosses every height between an
   // odd number of times: a disk inward of all of this slab's segments is inside.
@@ -353,8 +364,8 @@ bool ChainFinder::outside_binned(double x, double y, const Polyline& pl, Side si
     return false;
   int crossings = 0;
   for (int k = bin_start_[b]; k < bin_start_[b + 1]; ++k) {
-    const Eigen::Vector2d& a = pl[bin_items_[k]];
-    const Eigen::Vector2d& c = pl[bin_items_[k] + 1];
+    const Eigen::Vector2d &a = pl[bin_items_[k]];
+    const Eigen::Vector2d &c = pl[bin_items_[k] + 1];
     if ((a.y() > y) == (c.y() > y)) continue;
     const double xc = a.x() + (y - a.y()) * (c.x() - a.x()) / (c.y() - a.y());
     if (side == Side::Right ? xc > x : xc < x) ++crossings;
@@ -362,21 +373,23 @@ bool ChainFinder::outside_binned(double x, double y, const Polyline& pl, Side si
   return crossings % 2 == 0;
 }
 
-ChainResult ChainFinder::find(const std::vector<Disk>& disks, Side side, Platens platens,
-                              double tol) {
+ChainResult ChainFinder::find(const std::vector<Disk> &disks, Side side, Platens platens,
+                              double tol)
+{
   ChainResult r;
   find(disks, side, platens, tol, r);
   return r;
 }
 
-void polyline_from_chain(const std::vector<Disk>& disks, const std::vector<int>& chain,
-                         Platens platens, Polyline& out) {
+void polyline_from_chain(const std::vector<Disk> &disks, const std::vector<int> &chain,
+                         Platens platens, Polyline &out)
+{
   out.clear();
   if (chain.empty()) return;
   out.emplace_back(disks[chain.front()].x, platens.ylo);
   for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
-    const Disk& a = disks[chain[k]];
-    const Disk& b = disks[chain[k + 1]];
+    const Disk &a = disks[chain[k]];
+    const Disk &b = disks[chain[k + 1]];
     const double rs = a.r + b.r;
     // Equal split for zero radii keeps the point defined.
     const double f = rs > 0.0 ? a.r / rs : 0.5;
@@ -385,15 +398,17 @@ void polyline_from_chain(const std::vector<Disk>& disks, const std::vector<int>&
   out.emplace_back(disks[chain.back()].x, platens.yhi);
 }
 
-Polyline polyline_from_chain(const std::vector<Disk>& disks, const std::vector<int>& chain,
-                             Platens platens) {
+Polyline polyline_from_chain(const std::vector<Disk> &disks, const std::vector<int> &chain,
+                             Platens platens)
+{
   Polyline p;
   polyline_from_chain(disks, chain, platens, p);
   return p;
 }
 
-void chain_forces(const Polyline& polyline, Side side, double pressure, double thickness,
-                  std::vector<Eigen::Vector2d>& out) {
+void chain_forces(const Polyline &polyline, Side side, double pressure, double thickness,
+                  std::vector<Eigen::Vector2d> &out)
+{
   out.clear();
   const double pt = pressure * thickness;
   for (std::size_t k = 0; k + 1 < polyline.size(); ++k) {
@@ -405,23 +420,26 @@ void chain_forces(const Polyline& polyline, Side side, double pressure, double t
   }
 }
 
-std::vector<Eigen::Vector2d> chain_forces(const Polyline& polyline, Side side, double pressure,
-                                          double thickness) {
+std::vector<Eigen::Vector2d> chain_forces(const Polyline &polyline, Side side, double pressure,
+                                          double thickness)
+{
   std::vector<Eigen::Vector2d> f;
   chain_forces(polyline, side, pressure, thickness, f);
   return f;
 }
 
-Eigen::Vector2d escapee_force(const Disk& d, Side side, double pressure, double thickness) {
+Eigen::Vector2d escapee_force(const Disk &d, Side side, double pressure, double thickness)
+{
   const double mag = pressure * thickness * 2.0 * d.r;
   return Eigen::Vector2d(side == Side::Right ? -mag : mag, 0.0);
 }
 
-bool outside_polyline(const Eigen::Vector2d& p, const Polyline& polyline, Side side) {
+bool outside_polyline(const Eigen::Vector2d &p, const Polyline &polyline, Side side)
+{
   int crossings = 0;
   for (std::size_t k = 0; k + 1 < polyline.size(); ++k) {
-    const Eigen::Vector2d& a = polyline[k];
-    const Eigen::Vector2d& b = polyline[k + 1];
+    const Eigen::Vector2d &a = polyline[k];
+    const Eigen::Vector2d &b = polyline[k + 1];
     // Half-open in y so a ray through a vertex counts it exactly once.
     if ((a.y() > p.y()) == (b.y() > p.y())) continue;
     const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
@@ -430,4 +448,4 @@ bool outside_polyline(const Eigen::Vector2d& p, const Polyline& polyline, Side s
   return crossings % 2 == 0;
 }
 
-}  // namespace membrane
+} // namespace membrane

@@ -12,27 +12,30 @@
 
 namespace membrane {
 
-constexpr double RECORD_MAGIC = 7.0e9 + 2213.0;   // not a count a version-1 record starts with
+constexpr double RECORD_MAGIC = 7.0e9 + 2213.0; // not a count a version-1 record starts with
 constexpr int RECORD_VERSION = 2;
 
-inline RestartRecordWriter record_writer() { return RestartRecordWriter(RECORD_MAGIC, RECORD_VERSION); }
-inline RestartRecordReader record_reader(const double* data, std::size_t n)
+inline RestartRecordWriter record_writer()
+{
+  return RestartRecordWriter(RECORD_MAGIC, RECORD_VERSION);
+}
+inline RestartRecordReader record_reader(const double *data, std::size_t n)
 {
   return RestartRecordReader(data, n, RECORD_MAGIC, RECORD_VERSION);
 }
 
-void put_tags(RestartRecordWriter& out, const std::vector<long>& tags);
-void put_disks(RestartRecordWriter& out, const std::vector<Disk>& disks);
-void put_watch(RestartRecordWriter& out, const DetectionWatch& w);
-void get_tags(RestartRecordReader& in, std::vector<long>& out);
-void get_disks(RestartRecordReader& in, std::vector<Disk>& out);
-void get_watch(RestartRecordReader& in, DetectionWatch& out);
+void put_tags(RestartRecordWriter &out, const std::vector<long> &tags);
+void put_disks(RestartRecordWriter &out, const std::vector<Disk> &disks);
+void put_watch(RestartRecordWriter &out, const DetectionWatch &w);
+void get_tags(RestartRecordReader &in, std::vector<long> &out);
+void get_disks(RestartRecordReader &in, std::vector<Disk> &out);
+void get_watch(RestartRecordReader &in, DetectionWatch &out);
 
 // A hash of one disk's identity, type, radius and position: their sum over a
 // group (any order, any rank split) tells whether the group changed.
 inline std::uint64_t disk_checksum(long tag, int type, double x, double y, double r)
 {
-  auto mix = [](std::uint64_t h) {   // splitmix64 finaliser
+  auto mix = [](std::uint64_t h) { // splitmix64 finaliser
     h += 0x9e3779b97f4a7c15ull;
     h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
     h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
@@ -50,4 +53,4 @@ inline std::uint64_t disk_checksum(long tag, int type, double x, double y, doubl
   return mix(h ^ bits(r));
 }
 
-}  // namespace membrane
+} // namespace membrane

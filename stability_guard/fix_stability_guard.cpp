@@ -40,11 +40,14 @@ using namespace FixConst;
 namespace {
 
 const std::string PREFIX = "Fix stability/guard: ";
-constexpr double RECORD_MAGIC = 7.0e9 + 4871.0;   // of this style's restart record
+constexpr double RECORD_MAGIC = 7.0e9 + 4871.0; // of this style's restart record
 constexpr int RECORD_VERSION = 1;
-constexpr double SAFE_TIME_STEP_RATIO = 0.15;   // x sqrt(m_min/k_n), the published set-up
-constexpr double BLOW_UP_STEP_FRACTION = 0.05;  // |v| dt / r of a run that has blown up
-std::string msg(const std::string &text) { return PREFIX + text; }
+constexpr double SAFE_TIME_STEP_RATIO = 0.15;  // x sqrt(m_min/k_n), the published set-up
+constexpr double BLOW_UP_STEP_FRACTION = 0.05; // |v| dt / r of a run that has blown up
+std::string msg(const std::string &text)
+{
+  return PREFIX + text;
+}
 
 const char *const EVERY_USAGE = "every N, check every N steps (default 100)";
 const char *const MOVE_USAGE =
@@ -75,25 +78,27 @@ ValueTag max_over_ranks(ValueTag local, MPI_Comm world)
   return global;
 }
 
-}  // namespace
+} // namespace
 
 /* ---------------------------------------------------------------------- */
 
-FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
-  Fix(lammps, narg, arg),
-  move_limit(0.05), overlap_limit(0.1), time_step_limit(0.3), inertial_limit(1e-3),
-  check_inertial(false), d50(0.0), density(0.0), natoms0(0),
-  warned_overlap(false), warned_inertial(false), warnings(0)
+FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
+  : Fix(lammps, narg, arg), move_limit(0.05), overlap_limit(0.1), time_step_limit(0.3),
+    inertial_limit(1e-3), check_inertial(false), d50(0.0), density(0.0), natoms0(0),
+    warned_overlap(false), warned_inertial(false), warnings(0)
 {
   if (domain->dimension != 2)
     error->all(FLERR, msg("requires dimension 2 (this run has dimension " +
-                          std::to_string(domain->dimension) + "); use dimension 2").c_str());
+                          std::to_string(domain->dimension) + "); use dimension 2")
+                          .c_str());
   if (!atom->radius_flag)
     error->all(FLERR, msg(std::string("requires atom style sphere or granular (per-atom radius), "
-                                      "not ") + atom->atom_style + "; use atom_style granular").c_str());
+                                      "not ") +
+                          atom->atom_style + "; use atom_style granular")
+                          .c_str());
 
   nevery = 100;
-  std::string ilimit_text;   // as written, when given
+  std::string ilimit_text; // as written, when given
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
   // a limit that is a number > 0 and <= hi
   auto limit = [&](const char *usage, double hi) {
@@ -125,7 +130,8 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg) :
   if (!ilimit_text.empty() && !check_inertial)
     error->all(FLERR, keyword_message(PREFIX, "ilimit", ilimit_text,
                                       "has no effect without keyword 'inertial'; add inertial R P, "
-                                      "or leave ilimit out").c_str());
+                                      "or leave ilimit out")
+                          .c_str());
 
   vector_flag = 1;
   restart_global = 1;
@@ -150,8 +156,10 @@ void FixStabilityGuard::parse_inertial_value(StyleArgs &args, ScalarInput &in, b
     const double v = strtod(text.c_str(), &end);
     if (text.empty() || *end != '\0') args.bad("is not a number or v_name", INERTIAL_USAGE);
     if (!std::isfinite(v)) args.bad("must be finite", INERTIAL_USAGE);
-    if (positive && !(v > 0.0)) args.bad("must be a positive number (the pressure P)", INERTIAL_USAGE);
-    if (!positive && !(v >= 0.0)) args.bad("must be a number >= 0 (the strain rate R)", INERTIAL_USAGE);
+    if (positive && !(v > 0.0))
+      args.bad("must be a positive number (the pressure P)", INERTIAL_USAGE);
+    if (!positive && !(v >= 0.0))
+      args.bad("must be a number >= 0 (the strain rate R)", INERTIAL_USAGE);
   }
   in.parse(lmp, PREFIX, "inertial", text.c_str());
 }
@@ -174,10 +182,12 @@ void FixStabilityGuard::init()
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
   if (grains.empty)
     error->all(FLERR, msg(std::string("the fix group '") + group->names[igroup] +
-                          "' has no atoms; use a group with the disks to watch").c_str());
+                          "' has no atoms; use a group with the disks to watch")
+                          .c_str());
   d50 = grains.d50;
   density = grains.density;
-  values[TIME_STEP_RATIO] = check_time_step(lmp, groupbit, world, PREFIX, time_step_limit, warned_dt);
+  values[TIME_STEP_RATIO] =
+      check_time_step(lmp, groupbit, world, PREFIX, time_step_limit, warned_dt);
 }
 
 /* ----------------------------------------------------------------------
@@ -220,7 +230,8 @@ double FixStabilityGuard::compute_vector(int n)
 void FixStabilityGuard::write_restart(FILE *fp)
 {
   RestartRecordWriter out(RECORD_MAGIC, RECORD_VERSION);
-  for (double v : {static_cast<double>(warnings), warned_overlap ? 1.0 : 0.0, warned_inertial ? 1.0 : 0.0, warned_dt})
+  for (double v : {static_cast<double>(warnings), warned_overlap ? 1.0 : 0.0,
+                   warned_inertial ? 1.0 : 0.0, warned_dt})
     out.put(v);
   const std::vector<double> &rec = out.finish();
   if (comm->me != 0) return;
@@ -237,8 +248,10 @@ void FixStabilityGuard::restart(char *raw)
   warned_inertial = in.get() != 0.0;
   warned_dt = in.get();
   if (!in.finished())
-    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id + " cannot be read: " + in.error() +
-                          "; define this fix with another ID to start its checks afresh").c_str());
+    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id +
+                          " cannot be read: " + in.error() +
+                          "; define this fix with another ID to start its checks afresh")
+                          .c_str());
 }
 
 /* ----------------------------------------------------------------------
@@ -249,18 +262,22 @@ void FixStabilityGuard::restart(char *raw)
 
 void FixStabilityGuard::check_atoms()
 {
-  const stability::AtomScan scan = stability::scan_atoms(
-      static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f, atom->radius, atom->mask,
-      groupbit, update->dt);
+  const stability::AtomScan scan =
+      stability::scan_atoms(static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f,
+                            atom->radius, atom->mask, groupbit, update->dt);
 
   long nonfinite = scan.nonfinite;
   MPI_Allreduce(MPI_IN_PLACE, &nonfinite, 1, MPI_LONG, MPI_SUM, world);
   if (nonfinite > 0) {
     int first = scan.first_nonfinite >= 0 ? atom->tag[scan.first_nonfinite] : INT_MAX;
     MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, world);
-    error->all(FLERR, msg(std::to_string(nonfinite) + " atom(s) have a non-finite position, velocity or "
-                          "force at step " + std::to_string(update->ntimestep) + " (first: atom " +
-                          std::to_string(first) + "): the run has gone unstable; " + unstable_hint()).c_str());
+    error->all(FLERR,
+               msg(std::to_string(nonfinite) +
+                   " atom(s) have a non-finite position, velocity or "
+                   "force at step " +
+                   std::to_string(update->ntimestep) + " (first: atom " + std::to_string(first) +
+                   "): the run has gone unstable; " + unstable_hint())
+                   .c_str());
   }
 
   const ValueTag local{scan.max_step_fraction,
@@ -274,8 +291,8 @@ void FixStabilityGuard::check_atoms()
     char buf[768];
     snprintf(buf, sizeof(buf),
              "atom %d moved %.3g of its radius in one step at step " BIGINT_FORMAT
-             " (limit %g; a quasi-static test moves disks < 0.001): %s; %s", fastest.tag,
-             fastest.value, update->ntimestep, move_limit,
+             " (limit %g; a quasi-static test moves disks < 0.001): %s; %s",
+             fastest.tag, fastest.value, update->ntimestep, move_limit,
              blown_up ? "the run has gone unstable (kinetic energy blow-up)"
                       : "faster than 'move' allows (unstable runs move disks > 0.05)",
              unstable_hint().c_str());
@@ -290,15 +307,20 @@ std::string FixStabilityGuard::unstable_hint() const
   const double dt_ratio = values[TIME_STEP_RATIO];
   char hint[320];
   if (!(dt_ratio > 0.0))
-    snprintf(hint, sizeof(hint), "reduce the servo gain or the loading rate, or the time step if "
+    snprintf(hint, sizeof(hint),
+             "reduce the servo gain or the loading rate, or the time step if "
              "it is above %g x sqrt(m_min/k_n) (not checked: no kn peratomtypepair table)",
              SAFE_TIME_STEP_RATIO);
   else if (dt_ratio > SAFE_TIME_STEP_RATIO)
-    snprintf(hint, sizeof(hint), "reduce the time step (now %.3g x sqrt(m_min/k_n); %g is safe), "
-             "the servo gain or the loading rate", dt_ratio, SAFE_TIME_STEP_RATIO);
+    snprintf(hint, sizeof(hint),
+             "reduce the time step (now %.3g x sqrt(m_min/k_n); %g is safe), "
+             "the servo gain or the loading rate",
+             dt_ratio, SAFE_TIME_STEP_RATIO);
   else
-    snprintf(hint, sizeof(hint), "the time step is safe (%.3g x sqrt(m_min/k_n), at most %g): "
-             "reduce the servo gain or the loading rate", dt_ratio, SAFE_TIME_STEP_RATIO);
+    snprintf(hint, sizeof(hint),
+             "the time step is safe (%.3g x sqrt(m_min/k_n), at most %g): "
+             "reduce the servo gain or the loading rate",
+             dt_ratio, SAFE_TIME_STEP_RATIO);
   return hint;
 }
 
@@ -323,10 +345,16 @@ void FixStabilityGuard::check_lost_atoms()
   const bigint lost = natoms0 - count_group_atoms();
   values[LOST] = static_cast<double>(lost);
   if (lost > 0)
-    error->all(FLERR, msg(std::to_string(lost) + " atom(s) of the group were lost since the start of the "
-                          "run (at step " + std::to_string(update->ntimestep) + "): disks left the box "
-                          "through a wall or the membrane; check that walls and platens enclose the "
-                          "sample, and " + unstable_hint()).c_str());
+    error->all(FLERR,
+               msg(std::to_string(lost) +
+                   " atom(s) of the group were lost since the start of the "
+                   "run (at step " +
+                   std::to_string(update->ntimestep) +
+                   "): disks left the box "
+                   "through a wall or the membrane; check that walls and platens enclose the "
+                   "sample, and " +
+                   unstable_hint())
+                   .c_str());
 }
 
 /* ----------------------------------------------------------------------
@@ -351,8 +379,8 @@ void FixStabilityGuard::check_overlaps()
       for (int jj = 0; jj < list->numneigh[i]; jj++) {
         const int j = jlist[jj] & NEIGHMASK;
         if (!(mask[j] & groupbit)) continue;
-        const double frac = stability::overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1],
-                                                        radius[i], radius[j]);
+        const double frac =
+            stability::overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], radius[i], radius[j]);
         if (frac > local.value) {
           local = {frac, atom->tag[i]};
           partner = atom->tag[j];
@@ -374,8 +402,8 @@ void FixStabilityGuard::check_overlaps()
            " (limit %g): contacts this soft change the fabric and the volume; raise the contact "
            "stiffness (e.g. k_n >= 1000 x the mean stress x unit thickness) or lower the pressure "
            "(warned once; f_ID[2] is the current value)",
-           std::min(worst.tag, partner), std::max(worst.tag, partner), worst.value, update->ntimestep,
-           overlap_limit);
+           std::min(worst.tag, partner), std::max(worst.tag, partner), worst.value,
+           update->ntimestep, overlap_limit);
   warn(buf);
 }
 
@@ -385,7 +413,8 @@ void FixStabilityGuard::check_inertial_number()
 {
   // a variable may turn NaN, infinite, negative (R) or non-positive (P) mid-run
   const double rate = rate_in.evaluate(lmp);
-  if (!(std::isfinite(rate) && rate >= 0.0)) bad_inertial_value(rate_in, rate, ">= 0 (the strain rate R)");
+  if (!(std::isfinite(rate) && rate >= 0.0))
+    bad_inertial_value(rate_in, rate, ">= 0 (the strain rate R)");
   const double pressure = pressure_in.evaluate(lmp);
   if (!(std::isfinite(pressure) && pressure > 0.0))
     bad_inertial_value(pressure_in, pressure, "> 0 (the pressure P)");
@@ -393,18 +422,21 @@ void FixStabilityGuard::check_inertial_number()
   if (!std::isfinite(inertial))
     error->all(FLERR, keyword_message(PREFIX, "inertial", rate_in.text() + " " + pressure_in.text(),
                                       "the inertial number overflows at step " +
-                                      std::to_string(update->ntimestep) + " (R = " + number_text(rate) +
-                                      ", P = " + number_text(pressure) + "); the pressure is too "
-                                      "small for the rate").c_str());
+                                          std::to_string(update->ntimestep) + " (R = " +
+                                          number_text(rate) + ", P = " + number_text(pressure) +
+                                          "); the pressure is too "
+                                          "small for the rate")
+                          .c_str());
   values[INERTIAL] = inertial;
   if (inertial <= inertial_limit || warned_inertial) return;
   warned_inertial = true;
   char buf[512];
-  snprintf(buf, sizeof(buf),
-           "inertial number I = %.3g > %g at step " BIGINT_FORMAT " (strain rate %.3g 1/s, d50 %.3g m, "
-           "density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): the test is not quasi-static; "
-           "lower the loading rate (warned once; f_ID[4] is the current value)",
-           inertial, inertial_limit, update->ntimestep, rate, d50, density, pressure);
+  snprintf(
+      buf, sizeof(buf),
+      "inertial number I = %.3g > %g at step " BIGINT_FORMAT " (strain rate %.3g 1/s, d50 %.3g m, "
+      "density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): the test is not quasi-static; "
+      "lower the loading rate (warned once; f_ID[4] is the current value)",
+      inertial, inertial_limit, update->ntimestep, rate, d50, density, pressure);
   warn(buf);
 }
 
@@ -413,9 +445,10 @@ void FixStabilityGuard::bad_inertial_value(const ScalarInput &in, double value, 
 {
   error->all(FLERR, keyword_message(PREFIX, "inertial", in.text(),
                                     "is " + number_text(value) + " at step " +
-                                    std::to_string(update->ntimestep) +
-                                    "; it must be a finite number " + must).c_str());
-  std::abort();   // Error::all does not return; tells the compiler so
+                                        std::to_string(update->ntimestep) +
+                                        "; it must be a finite number " + must)
+                        .c_str());
+  std::abort(); // Error::all does not return; tells the compiler so
 }
 
 /* ---------------------------------------------------------------------- */

@@ -10,7 +10,9 @@
 
 #ifdef FIX_CLASS
 
+// clang-format off
 FixStyle(stability/guard,FixStabilityGuard)
+// clang-format on
 
 #else
 
@@ -37,21 +39,29 @@ class FixStabilityGuard : public Fix {
   void restart(char *);
 
   // global vector layout (1-based in input scripts: f_ID[k]); values of the last check
-  enum VectorIndex { STEP_FRACTION = 0, OVERLAP, TIME_STEP_RATIO, INERTIAL, LOST, WARNINGS, VECTOR_SIZE };
+  enum VectorIndex {
+    STEP_FRACTION = 0,
+    OVERLAP,
+    TIME_STEP_RATIO,
+    INERTIAL,
+    LOST,
+    WARNINGS,
+    VECTOR_SIZE
+  };
 
  private:
-  double move_limit;        // error: a disk moves more than this x its radius in one step
-  double overlap_limit;     // warning: overlap / smaller radius
-  double time_step_limit;   // warning: dt / sqrt(m_min / k_n)
-  double inertial_limit;    // warning: inertial number
+  double move_limit;      // error: a disk moves more than this x its radius in one step
+  double overlap_limit;   // warning: overlap / smaller radius
+  double time_step_limit; // warning: dt / sqrt(m_min / k_n)
+  double inertial_limit;  // warning: inertial number
   bool check_inertial;
   ScalarInput rate_in, pressure_in;
 
-  double d50, density;      // of the group, for the inertial number
-  bigint natoms0;           // group atoms at setup
+  double d50, density; // of the group, for the inertial number
+  bigint natoms0;      // group atoms at setup
   double values[VECTOR_SIZE];
   bool warned_overlap, warned_inertial;
-  double warned_dt = 0.0;   // the time step last warned about
+  double warned_dt = 0.0; // the time step last warned about
   int warnings;
 
   void parse_inertial_value(StyleArgs &args, ScalarInput &in, bool positive);
@@ -65,7 +75,7 @@ class FixStabilityGuard : public Fix {
   std::string unstable_hint() const;
 };
 
-}
+} // namespace LAMMPS_NS
 
 #endif
 #endif

@@ -18,4 +18,4 @@ double d50_by_area(std::vector<double> diameters)
   return diameters.back();
 }
 
-}  // namespace stability
+} // namespace stability

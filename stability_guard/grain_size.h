@@ -10,4 +10,4 @@ namespace stability {
 // total disk area lies. Empty input -> 0.
 double d50_by_area(std::vector<double> diameters);
 
-}  // namespace stability
+} // namespace stability

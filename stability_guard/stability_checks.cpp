@@ -47,7 +47,7 @@ bool finite3(const double *a)
   return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
-}  // namespace
+} // namespace
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
                     const double *const *f, const double *radius, const int *mask, int groupbit,
@@ -69,4 +69,4 @@ AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *
   return s;
 }
 
-}  // namespace stability
+} // namespace stability

@@ -38,14 +38,14 @@ double overlap_fraction(double dx, double dy, double ri, double rj);
 // per step. Arrays as LIGGGHTS keeps them (x[i][0..2] etc.); `in_group` masks
 // the atoms to look at (mask[i] & groupbit).
 struct AtomScan {
-  long nonfinite = 0;            // atoms with a non-finite x, v or f
-  long first_nonfinite = -1;     // index of the first of them, -1 if none
-  double max_step_fraction = 0;  // max |v| dt / r over finite atoms
-  long argmax_step = -1;         // its index, -1 if no atom
+  long nonfinite = 0;           // atoms with a non-finite x, v or f
+  long first_nonfinite = -1;    // index of the first of them, -1 if none
+  double max_step_fraction = 0; // max |v| dt / r over finite atoms
+  long argmax_step = -1;        // its index, -1 if no atom
 };
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
                     const double *const *f, const double *radius, const int *mask, int groupbit,
                     double dt);
 
-}  // namespace stability
+} // namespace stability

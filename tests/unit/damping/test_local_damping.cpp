@@ -17,7 +17,8 @@ constexpr double kTol = 1e-15;
 // damped force F + F_d = (3 + 2.1, -4 - 2.8, 0) = (5.1, -6.8, 0):
 // In both components the force already opposes the motion (F_x > 0 with v_x < 0,
 // F_y < 0 with v_y > 0), so the damping makes it 1.7 times larger.
-TEST(LocalDamping, HandWorkedForce) {
+TEST(LocalDamping, HandWorkedForce)
+{
   const double f[3] = {3.0, -4.0, 0.0};
   const double v[3] = {-1.0, 2.0, 0.0};
   double fd[3];
@@ -36,7 +37,8 @@ TEST(LocalDamping, HandWorkedForce) {
 // F = (3, -4, 0), v = (1, -2, 0), alpha = 0.7: the force drives the motion in
 // both components and is reduced to 30 %:
 //   F_d = (-0.7 * 3 * 1, -0.7 * 4 * (-1), 0) = (-2.1, 2.8, 0),  F + F_d = (0.9, -1.2, 0)
-TEST(LocalDamping, HandWorkedDrivingForceIsReduced) {
+TEST(LocalDamping, HandWorkedDrivingForceIsReduced)
+{
   double f[3] = {3.0, -4.0, 0.0};
   const double v[3] = {1.0, -2.0, 0.0};
   damping::apply_local_damping(f, v, 3, 0.7);
@@ -47,13 +49,14 @@ TEST(LocalDamping, HandWorkedDrivingForceIsReduced) {
 
 // A component that does not move is not damped: sign(0) = 0.
 // F = (3, -4, 5), v = (0, 2, -0.0), alpha = 0.7 -> F_d = (0, -2.8, 0)
-TEST(LocalDamping, ZeroVelocityComponentIsNotDamped) {
+TEST(LocalDamping, ZeroVelocityComponentIsNotDamped)
+{
   const double f[3] = {3.0, -4.0, 5.0};
   const double v[3] = {0.0, 2.0, -0.0};
   double fd[3];
   damping::local_damping_force(f, v, 3, 0.7, fd);
   EXPECT_EQ(fd[0], 0.0);
-  EXPECT_FALSE(std::signbit(fd[0]));  // +0.0, not -0.0
+  EXPECT_FALSE(std::signbit(fd[0])); // +0.0, not -0.0
   EXPECT_NEAR(fd[1], -2.8, kTol);
   EXPECT_EQ(fd[2], 0.0);
   EXPECT_EQ(damping::sign(0.0), 0.0);
@@ -64,7 +67,8 @@ TEST(LocalDamping, ZeroVelocityComponentIsNotDamped) {
 }
 
 // alpha = 0: the force is unchanged, bit for bit.
-TEST(LocalDamping, AlphaZeroLeavesForceUnchanged) {
+TEST(LocalDamping, AlphaZeroLeavesForceUnchanged)
+{
   double f[3] = {3.0, -4.0, 0.125};
   const double v[3] = {-1.0, 2.0, 7.0};
   damping::apply_local_damping(f, v, 3, 0.0);
@@ -75,7 +79,8 @@ TEST(LocalDamping, AlphaZeroLeavesForceUnchanged) {
 
 // The torque uses the same rule with the angular velocity:
 // T_z = -0.05, omega_z = 10, alpha = 0.7 -> T_d,z = -0.7 * 0.05 * 1 = -0.035, T + T_d = -0.085
-TEST(LocalDamping, TorqueWithAngularVelocity) {
+TEST(LocalDamping, TorqueWithAngularVelocity)
+{
   double t[3] = {0.0, 0.0, -0.05};
   const double w[3] = {0.0, 0.0, 10.0};
   damping::apply_local_damping(t, w, 3, 0.7);
@@ -85,7 +90,8 @@ TEST(LocalDamping, TorqueWithAngularVelocity) {
 }
 
 // Only n components are touched.
-TEST(LocalDamping, OnlyNComponents) {
+TEST(LocalDamping, OnlyNComponents)
+{
   double f[3] = {3.0, -4.0, 5.0};
   const double v[3] = {1.0, 1.0, 1.0};
   damping::apply_local_damping(f, v, 2, 0.5);
@@ -96,7 +102,8 @@ TEST(LocalDamping, OnlyNComponents) {
 
 // The damping force always opposes the
 // velocity (F_d . v <= 0 component by component) and |F_d,k| = alpha |F_k|.
-TEST(LocalDamping, OpposesMotionWithSizeAlphaF) {
+TEST(LocalDamping, OpposesMotionWithSizeAlphaF)
+{
   const double fs[] = {-2.5, -1.0, 0.0, 0.5, 3.0};
   const double vs[] = {-4.0, -0.1, 0.0, 0.3, 2.0};
   for (double f : fs)
@@ -107,4 +114,4 @@ TEST(LocalDamping, OpposesMotionWithSizeAlphaF) {
     }
 }
 
-}  // namespace
+} // namespace

@@ -20,30 +20,37 @@ using fabric::Contact;
 constexpr double kPi = 3.141592653589793238462643383280;
 constexpr double kTol = 1e-12;
 
-double deg(double degrees) { return degrees * kPi / 180.0; }
+double deg(double degrees)
+{
+  return degrees * kPi / 180.0;
+}
 
 // Contact of particle 0 with particle 1 in direction `angle`, branch length `length`.
-Contact contact_at(double angle, double fn, double ft = 0.0, double length = 1.0) {
+Contact contact_at(double angle, double fn, double ft = 0.0, double length = 1.0)
+{
   const double nx = std::cos(angle), ny = std::sin(angle);
   return Contact{0, 1, nx, ny, fn, ft, length * nx, length * ny};
 }
 
 // Orientations of pi-periodic quantities are equal modulo pi.
-void expect_same_axis(double actual, double expected, double tol) {
+void expect_same_axis(double actual, double expected, double tol)
+{
   EXPECT_NEAR(std::remainder(actual - expected, kPi), 0.0, tol)
       << "actual " << actual << " expected " << expected;
 }
 
-void expect_in_half_open_range(double theta) {
+void expect_in_half_open_range(double theta)
+{
   EXPECT_GT(theta, -kPi / 2);
   EXPECT_LE(theta, kPi / 2);
 }
 
 // Exact bin integrals of E(th) = (1/2pi)[1 + a cos 2(th - th_a)] times N.
-fabric::Histogram model_count_histogram(int nbins, double total, double a, double theta_a) {
+fabric::Histogram model_count_histogram(int nbins, double total, double a, double theta_a)
+{
   const double width = 2.0 * kPi / nbins;
-  fabric::Histogram h{nbins, {}, std::vector<double>(nbins, 1.0),
-                      std::vector<double>(nbins, 0.0), 0};
+  fabric::Histogram h{
+      nbins, {}, std::vector<double>(nbins, 1.0), std::vector<double>(nbins, 0.0), 0};
   for (int g = 0; g < nbins; ++g) {
     const double centre = (g + 0.5) * width;
     h.count.push_back(total / (2.0 * kPi) *
@@ -55,7 +62,8 @@ fabric::Histogram model_count_histogram(int nbins, double total, double a, doubl
 // The same N contacts, uniformly spaced over the half circle (their -n copies fill
 // the other half): (j + 1/2) pi / N. With N a multiple of nbins/2 every bin holds
 // the same number of contacts placed symmetrically about its centre.
-std::vector<double> uniform_half_circle(int n) {
+std::vector<double> uniform_half_circle(int n)
+{
   std::vector<double> angles;
   for (int j = 0; j < n; ++j) angles.push_back((j + 0.5) * kPi / n);
   return angles;
@@ -64,7 +72,8 @@ std::vector<double> uniform_half_circle(int n) {
 // Integer multiplicities 4 [1 + a cos 2(th - th_a)] at th_a + k 30 deg for a = 1/2:
 // a six-point quadrature of E(th) on which sum cos 2th_k and sum cos 4th_k vanish,
 // so the tensors of these contacts equal those of the continuous model exactly.
-std::vector<double> model_fabric_angles(double theta_a) {
+std::vector<double> model_fabric_angles(double theta_a)
+{
   const int multiplicity[6] = {6, 5, 3, 2, 3, 5};
   std::vector<double> angles;
   for (int k = 0; k < 6; ++k)
@@ -72,43 +81,48 @@ std::vector<double> model_fabric_angles(double theta_a) {
   return angles;
 }
 
-double model_normal_force(double angle, double f0, double an, double theta_n) {
+double model_normal_force(double angle, double f0, double an, double theta_n)
+{
   return f0 * (1.0 + an * std::cos(2.0 * (angle - theta_n)));
 }
 
-double model_tangential_force(double angle, double f0, double at, double theta_t) {
+double model_tangential_force(double angle, double f0, double at, double theta_t)
+{
   return -f0 * at * std::sin(2.0 * (angle - theta_t));
 }
 
 // ---- polar histogram --------------------------------------------------------
 
-TEST(PolarHistogram, ContactFillsItsBinAndTheOppositeOne) {
+TEST(PolarHistogram, ContactFillsItsBinAndTheOppositeOne)
+{
   const fabric::Histogram h = fabric::polar_histogram({contact_at(deg(10), 2.0, 0.5)}, 18);
   ASSERT_EQ(h.nbins, 18);
   ASSERT_EQ(h.count.size(), 18u);
   EXPECT_EQ(h.count[0], 1.0);
-  EXPECT_EQ(h.count[9], 1.0);  // 190 deg
+  EXPECT_EQ(h.count[9], 1.0); // 190 deg
   for (int bin : {0, 9}) {
     EXPECT_EQ(h.mean_fn[bin], 2.0);
-    EXPECT_EQ(h.mean_ft[bin], 0.5);  // the -n copy keeps ft (see Contact::ft)
+    EXPECT_EQ(h.mean_ft[bin], 0.5); // the -n copy keeps ft (see Contact::ft)
   }
   EXPECT_EQ(h.empty_bins, 16);
 }
 
-TEST(PolarHistogram, BinsHoldMeanForces) {
+TEST(PolarHistogram, BinsHoldMeanForces)
+{
   const fabric::Histogram h = fabric::polar_histogram(
       {contact_at(deg(5), 1.0, -1.0), contact_at(deg(15), 3.0, 2.0), contact_at(deg(100), 7.0)},
       18);
   EXPECT_EQ(h.count[0], 2.0);
   EXPECT_DOUBLE_EQ(h.mean_fn[0], 2.0);
   EXPECT_DOUBLE_EQ(h.mean_ft[0], 0.5);
-  EXPECT_EQ(h.count[5], 1.0);   // 100 deg
-  EXPECT_EQ(h.count[14], 1.0);  // 280 deg
+  EXPECT_EQ(h.count[5], 1.0);  // 100 deg
+  EXPECT_EQ(h.count[14], 1.0); // 280 deg
   EXPECT_EQ(h.mean_fn[14], 7.0);
   EXPECT_EQ(h.empty_bins, 14);
 }
 
-TEST(PolarHistogram, RejectsBinCountsThatCannotSeeTheFabric) {
+TEST(PolarHistogram, RejectsBinCountsThatCannotSeeTheFabric)
+{
   for (int nbins : {-1, 0, 1, 2, 4})
     EXPECT_THROW(fabric::polar_histogram({}, nbins), std::invalid_argument) << nbins;
   EXPECT_NO_THROW(fabric::polar_histogram({}, 3));
@@ -116,7 +130,8 @@ TEST(PolarHistogram, RejectsBinCountsThatCannotSeeTheFabric) {
 
 // ---- normal anisotropy: histogram --------------------------------------------
 
-TEST(NormalAnisotropyHistogram, UnbiasedRecoversTheModelFromExactBinIntegrals) {
+TEST(NormalAnisotropyHistogram, UnbiasedRecoversTheModelFromExactBinIntegrals)
+{
   for (double theta_a : {deg(20), deg(-70), deg(90)}) {
     const fabric::Histogram h = model_count_histogram(18, 1000.0, 0.3, theta_a);
     const fabric::Anisotropy f = fabric::normal_anisotropy_histogram(h, BinCorrection::Unbiased);
@@ -126,7 +141,8 @@ TEST(NormalAnisotropyHistogram, UnbiasedRecoversTheModelFromExactBinIntegrals) {
   }
 }
 
-TEST(NormalAnisotropyHistogram, UnbiasedIsTheDefault) {
+TEST(NormalAnisotropyHistogram, UnbiasedIsTheDefault)
+{
   const fabric::Histogram h = model_count_histogram(18, 1000.0, 0.3, deg(20));
   EXPECT_EQ(fabric::normal_anisotropy_histogram(h).a,
             fabric::normal_anisotropy_histogram(h, BinCorrection::Unbiased).a);
@@ -135,7 +151,8 @@ TEST(NormalAnisotropyHistogram, UnbiasedIsTheDefault) {
 // Published prefactor 2 sin(dth)/(N dth) vs unbiased 2 dth/(N sin dth): ratio
 // (sin dth / dth)^2. For 18 bins dth = 20 deg: (0.3420201/0.3490659)^2 = 0.960038,
 // i.e. a is 4.0 % low; the orientation is unaffected.
-TEST(NormalAnisotropyHistogram, PublishedPrefactorIsLowBySquaredSincOfBinWidth) {
+TEST(NormalAnisotropyHistogram, PublishedPrefactorIsLowBySquaredSincOfBinWidth)
+{
   const double width = deg(20);
   const double ratio = std::pow(std::sin(width) / width, 2);
   EXPECT_NEAR(ratio, 0.960038, 1e-6);
@@ -147,14 +164,16 @@ TEST(NormalAnisotropyHistogram, PublishedPrefactorIsLowBySquaredSincOfBinWidth) 
   expect_same_axis(published.theta, deg(20), kTol);
 }
 
-TEST(NormalAnisotropyHistogram, WorksForOddBinCounts) {
+TEST(NormalAnisotropyHistogram, WorksForOddBinCounts)
+{
   const fabric::Histogram h = model_count_histogram(7, 500.0, 0.45, deg(-33));
   const fabric::Anisotropy f = fabric::normal_anisotropy_histogram(h);
   EXPECT_NEAR(f.a, 0.45, kTol);
   expect_same_axis(f.theta, deg(-33), kTol);
 }
 
-TEST(NormalAnisotropyHistogram, RejectsMalformedHistograms) {
+TEST(NormalAnisotropyHistogram, RejectsMalformedHistograms)
+{
   fabric::Histogram h = model_count_histogram(18, 10.0, 0.0, 0.0);
   h.count.pop_back();
   EXPECT_THROW(fabric::normal_anisotropy_histogram(h), std::invalid_argument);
@@ -164,7 +183,8 @@ TEST(NormalAnisotropyHistogram, RejectsMalformedHistograms) {
 
 // ---- normal anisotropy: tensor -----------------------------------------------
 
-TEST(NormalAnisotropyTensor, ModelQuadratureGivesExactAnisotropy) {
+TEST(NormalAnisotropyTensor, ModelQuadratureGivesExactAnisotropy)
+{
   for (double theta_a : {deg(20), deg(-50), deg(90)}) {
     std::vector<Contact> contacts;
     for (double angle : model_fabric_angles(theta_a)) contacts.push_back(contact_at(angle, 1.0));
@@ -176,17 +196,18 @@ TEST(NormalAnisotropyTensor, ModelQuadratureGivesExactAnisotropy) {
 }
 
 // Independent route: build phi, solve with Eigen, a = 2 (lambda_max - lambda_min).
-TEST(NormalAnisotropyTensor, RandomContactsMatchAnEigenSolver) {
+TEST(NormalAnisotropyTensor, RandomContactsMatchAnEigenSolver)
+{
   std::mt19937 rng(20240611);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Contact> contacts;
-  while (contacts.size() < 500) {  // rejection-sample E with a = 0.4, th_a = 35 deg
+  while (contacts.size() < 500) { // rejection-sample E with a = 0.4, th_a = 35 deg
     const double angle = 2.0 * kPi * uniform(rng);
     if (1.4 * uniform(rng) < 1.0 + 0.4 * std::cos(2.0 * (angle - deg(35))))
       contacts.push_back(contact_at(angle, 1.0));
   }
   Eigen::Matrix2d phi = Eigen::Matrix2d::Zero();
-  for (const Contact& c : contacts) {
+  for (const Contact &c : contacts) {
     const Eigen::Vector2d n(c.nx, c.ny);
     phi += n * n.transpose();
   }
@@ -198,13 +219,14 @@ TEST(NormalAnisotropyTensor, RandomContactsMatchAnEigenSolver) {
   const fabric::Anisotropy f = fabric::normal_anisotropy_tensor(contacts);
   EXPECT_NEAR(f.a, expected_a, kTol);
   expect_same_axis(f.theta, std::atan2(major.y(), major.x()), 1e-10);
-  EXPECT_NEAR(f.a, 0.4, 0.15);  // sanity: the sample looks like its density
+  EXPECT_NEAR(f.a, 0.4, 0.15); // sanity: the sample looks like its density
 }
 
 // With the bin width -> 0 the histogram estimate becomes the tensor one. Reading
 // cos 2th at the bin centre instead of at th errs by at most dth per entry and
 // the prefactor dth/sin dth by O(dth^2), so |a_hist - a_tensor| <= 2 dth (loose).
-TEST(NormalAnisotropyTensor, IsTheFineBinLimitOfTheHistogram) {
+TEST(NormalAnisotropyTensor, IsTheFineBinLimitOfTheHistogram)
+{
   std::mt19937 rng(99);
   std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
   std::vector<Contact> contacts;
@@ -221,7 +243,8 @@ TEST(NormalAnisotropyTensor, IsTheFineBinLimitOfTheHistogram) {
 
 // Hexagonal packing under isotropic load, contacts at the 6-bin centres 30, 90,
 // 150 deg (+ copies at 210, 270, 330): one entry per bin, all fn equal.
-TEST(ForceAnisotropy, HexagonalPackingUnderIsotropicLoad) {
+TEST(ForceAnisotropy, HexagonalPackingUnderIsotropicLoad)
+{
   const double fn = 5.0;
   const std::vector<Contact> contacts = {contact_at(deg(30), fn), contact_at(deg(90), fn),
                                          contact_at(deg(150), fn)};
@@ -249,7 +272,8 @@ TEST(ForceAnisotropy, HexagonalPackingUnderIsotropicLoad) {
 // the unbiased estimate is therefore an * h / sin h (exact), i.e. an to a relative
 // h^2/6 = 5.1e-7. Orientation and f0 are unaffected (sums over whole periods).
 // Tensor: the discrete sums over these points are exact, so all five values are.
-TEST(ForceAnisotropy, DenseUniformSetRecoversTheModelRoses) {
+TEST(ForceAnisotropy, DenseUniformSetRecoversTheModelRoses)
+{
   const double f0 = 2.5, an = 0.4, theta_n = deg(25), at = 0.15, theta_t = deg(-35);
   const int n = 1800, nbins = 18;
   std::vector<Contact> contacts;
@@ -286,7 +310,8 @@ TEST(ForceAnisotropy, DenseUniformSetRecoversTheModelRoses) {
 // Anisotropic fabric (a = 1/2, quadrature above) carrying the model roses: the
 // 1/(1 + a cos 2(th - th_a)) weight makes the force tensor see the mean-force rose
 // exactly; without it the fabric leaks into an.
-TEST(ForceAnisotropy, TensorRemovesTheFabricFromTheForceRose) {
+TEST(ForceAnisotropy, TensorRemovesTheFabricFromTheForceRose)
+{
   const double f0 = 1.7, an = 0.3, theta_n = deg(50), at = 0.1, theta_t = deg(10);
   std::vector<Contact> contacts;
   for (double angle : model_fabric_angles(deg(20)))
@@ -308,12 +333,13 @@ TEST(ForceAnisotropy, TensorRemovesTheFabricFromTheForceRose) {
 
 // Model bin means f(g) = f0 [1 + an (sin dth/dth) cos 2(th_g - th_n)] (the exact
 // bin average of the rose); published correction is low by (sin dth/dth)^2.
-TEST(ForceAnisotropy, HistogramCorrectionsOnExactBinMeans) {
+TEST(ForceAnisotropy, HistogramCorrectionsOnExactBinMeans)
+{
   const int nbins = 18;
   const double width = 2.0 * kPi / nbins, sinc = std::sin(width) / width;
   const double f0 = 3.0, an = 0.5, theta_n = deg(-40);
-  fabric::Histogram h{nbins, std::vector<double>(nbins, 4.0), {}, std::vector<double>(nbins, 0.0),
-                      0};
+  fabric::Histogram h{
+      nbins, std::vector<double>(nbins, 4.0), {}, std::vector<double>(nbins, 0.0), 0};
   for (int g = 0; g < nbins; ++g)
     h.mean_fn.push_back(f0 * (1.0 + an * sinc * std::cos(2.0 * ((g + 0.5) * width - theta_n))));
 
@@ -328,7 +354,8 @@ TEST(ForceAnisotropy, HistogramCorrectionsOnExactBinMeans) {
 
 // One empty bin among 18 equal ones: left out, and f0 normalised by the 17 bins'
 // angle, so f0 stays the common mean (not 17/18 of it).
-TEST(ForceAnisotropy, EmptyBinsAreLeftOutAndReported) {
+TEST(ForceAnisotropy, EmptyBinsAreLeftOutAndReported)
+{
   const int nbins = 18;
   fabric::Histogram h{nbins, std::vector<double>(nbins, 10.0), std::vector<double>(nbins, 3.0),
                       std::vector<double>(nbins, 0.0), 1};
@@ -341,13 +368,14 @@ TEST(ForceAnisotropy, EmptyBinsAreLeftOutAndReported) {
   EXPECT_TRUE(std::isfinite(f.theta_n));
 }
 
-TEST(ForceAnisotropy, ZeroForcesGiveZerosNotNaN) {
+TEST(ForceAnisotropy, ZeroForcesGiveZerosNotNaN)
+{
   const std::vector<Contact> contacts = {contact_at(deg(10), 0.0), contact_at(deg(70), 0.0)};
   const fabric::ForceAnisotropy binned =
       fabric::force_anisotropy_histogram(fabric::polar_histogram(contacts, 18));
   const fabric::ForceAnisotropy tensor =
       fabric::force_anisotropy_tensor(contacts, fabric::normal_anisotropy_tensor(contacts));
-  for (const fabric::ForceAnisotropy& f : {binned, tensor}) {
+  for (const fabric::ForceAnisotropy &f : {binned, tensor}) {
     EXPECT_EQ(f.an, 0.0);
     EXPECT_EQ(f.f0, 0.0);
     EXPECT_EQ(f.at, 0.0);
@@ -359,7 +387,8 @@ TEST(ForceAnisotropy, ZeroForcesGiveZerosNotNaN) {
 
 // {0,1,3,3,3,2}: sum 12 over 6 particles -> Cn = 2; one with 0 and one with 1
 // contact -> Zm = (12 - 1)/(6 - 1 - 1) = 2.75.
-TEST(Coordination, HandWorkedExampleWithRattlers) {
+TEST(Coordination, HandWorkedExampleWithRattlers)
+{
   const fabric::Coordination c = fabric::coordination({0, 1, 3, 3, 3, 2});
   EXPECT_DOUBLE_EQ(c.Cn, 2.0);
   EXPECT_DOUBLE_EQ(c.Zm, 2.75);
@@ -369,13 +398,15 @@ TEST(Coordination, HandWorkedExampleWithRattlers) {
   EXPECT_EQ(c.n1, 1);
 }
 
-TEST(Coordination, OnlyRattlersGiveZeroMechanicalCoordination) {
+TEST(Coordination, OnlyRattlersGiveZeroMechanicalCoordination)
+{
   const fabric::Coordination c = fabric::coordination({0, 0, 1});
   EXPECT_DOUBLE_EQ(c.Cn, 1.0 / 3.0);
   EXPECT_EQ(c.Zm, 0.0);
 }
 
-TEST(Coordination, RejectsNegativeCounts) {
+TEST(Coordination, RejectsNegativeCounts)
+{
   EXPECT_THROW(fabric::coordination({2, -1}), std::invalid_argument);
 }
 
@@ -384,7 +415,8 @@ TEST(Coordination, RejectsNegativeCounts) {
 // Square lattice of disks radius r, spacing 2r: per particle one cell of area 4r^2
 // and two owned contacts (+x, +y) with branch 2r and force F:
 // sigma_xx = sigma_yy = F 2r / 4r^2 = F/(2r) = 3000 for F = 3, r = 0.5e-3.
-TEST(LoveWeber, SquareLatticeUnderEqualContactForces) {
+TEST(LoveWeber, SquareLatticeUnderEqualContactForces)
+{
   const double r = 0.5e-3, force = 3.0;
   const Eigen::Matrix2d sigma = fabric::love_weber_stress(
       {contact_at(0.0, force, 0.0, 2 * r), contact_at(deg(90), force, 0.0, 2 * r)}, 4 * r * r);
@@ -397,7 +429,8 @@ TEST(LoveWeber, SquareLatticeUnderEqualContactForces) {
 // Hexagonal packing: per particle a cell of area 2 sqrt(3) r^2 and three owned
 // contacts at 0, 60, 120 deg. sum n n^T over them = (3/2) I, so
 // sigma = F 2r (3/2) / (2 sqrt(3) r^2) I = sqrt(3) F / (2 r) I.
-TEST(LoveWeber, HexagonalCellIsIsotropic) {
+TEST(LoveWeber, HexagonalCellIsIsotropic)
+{
   const double r = 2.0, force = 7.0;
   const std::vector<Contact> contacts = {contact_at(0.0, force, 0.0, 2 * r),
                                          contact_at(deg(60), force, 0.0, 2 * r),
@@ -412,7 +445,8 @@ TEST(LoveWeber, HexagonalCellIsIsotropic) {
 
 // Row index = force, column = branch: a contact along x with a tangential force
 // ft (along +y) gives sigma_yx = ft L / A and sigma_xy = 0.
-TEST(LoveWeber, ForceIsTheRowIndex) {
+TEST(LoveWeber, ForceIsTheRowIndex)
+{
   const Eigen::Matrix2d sigma = fabric::love_weber_stress({contact_at(0.0, 2.0, 0.5, 3.0)}, 1.5);
   EXPECT_NEAR(sigma(0, 0), 2.0 * 3.0 / 1.5, kTol);
   EXPECT_NEAR(sigma(1, 0), 0.5 * 3.0 / 1.5, kTol);
@@ -420,7 +454,8 @@ TEST(LoveWeber, ForceIsTheRowIndex) {
   EXPECT_NEAR(sigma(1, 1), 0.0, kTol);
 }
 
-TEST(LoveWeber, CentralForcesGiveASymmetricTensor) {
+TEST(LoveWeber, CentralForcesGiveASymmetricTensor)
+{
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi), magnitude(0.1, 2.0);
   std::vector<Contact> contacts;
@@ -428,7 +463,7 @@ TEST(LoveWeber, CentralForcesGiveASymmetricTensor) {
     contacts.push_back(contact_at(angle(rng), magnitude(rng), 0.0, magnitude(rng)));
   const Eigen::Matrix2d sigma = fabric::love_weber_stress(contacts, 10.0);
   EXPECT_NEAR(sigma(0, 1), sigma(1, 0), 1e-12 * sigma.norm());
-  EXPECT_GT(sigma.trace(), 0.0);  // repulsive contacts: compression positive
+  EXPECT_GT(sigma.trace(), 0.0); // repulsive contacts: compression positive
 }
 
 // A column of disks (radius r, period 2r in y) between walls at x = +-r pushing
@@ -437,7 +472,8 @@ TEST(LoveWeber, CentralForcesGiveASymmetricTensor) {
 //   sigma_xx = 2 F r / 4r^2 = F/(2r): the wall force per unit height, as it must;
 //   sigma_yy = P 2r / 4r^2 = P/(2r).
 // A branch of 2r (to a mirror centre) would double sigma_xx.
-TEST(LoveWeber, WallContactsGiveTheWallTraction) {
+TEST(LoveWeber, WallContactsGiveTheWallTraction)
+{
   const double r = 0.25, wall_force = 4.0, vertical_force = 1.0;
   const Contact right_wall{0, -1, 1.0, 0.0, wall_force, 0.0, r, 0.0};
   const Contact left_wall{0, -1, -1.0, 0.0, wall_force, 0.0, -r, 0.0};
@@ -449,7 +485,8 @@ TEST(LoveWeber, WallContactsGiveTheWallTraction) {
   EXPECT_NEAR(sigma(0, 1), 0.0, kTol);
 }
 
-TEST(LoveWeber, RejectsNonPositiveArea) {
+TEST(LoveWeber, RejectsNonPositiveArea)
+{
   EXPECT_THROW(fabric::love_weber_stress({}, 0.0), std::invalid_argument);
   EXPECT_THROW(fabric::love_weber_stress({}, -1.0), std::invalid_argument);
 }
@@ -459,18 +496,20 @@ TEST(LoveWeber, RejectsNonPositiveArea) {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-TEST(AngleBin, NonFiniteAnglesHaveNoBin) {
+TEST(AngleBin, NonFiniteAnglesHaveNoBin)
+{
   for (double angle : {kNaN, kInf, -kInf}) EXPECT_EQ(fabric::angle_bin(angle, 18), -1) << angle;
   EXPECT_EQ(fabric::angle_bin(0.5, 0), -1);
 }
 
-TEST(AngleBin, AnyFiniteAngleIsInRange) {
+TEST(AngleBin, AnyFiniteAngleIsInRange)
+{
   EXPECT_EQ(fabric::angle_bin(0.0, 18), 0);
   EXPECT_EQ(fabric::angle_bin(deg(10), 18), 0);
   EXPECT_EQ(fabric::angle_bin(deg(190), 18), 9);
   EXPECT_EQ(fabric::angle_bin(deg(-10), 18), 17);
   EXPECT_EQ(fabric::angle_bin(2.0 * kPi, 18), 0);
-  EXPECT_EQ(fabric::angle_bin(-1e-17, 18), 0);  // -tiny + 2 pi rounds to 2 pi
+  EXPECT_EQ(fabric::angle_bin(-1e-17, 18), 0); // -tiny + 2 pi rounds to 2 pi
   EXPECT_EQ(fabric::angle_bin(std::nextafter(2.0 * kPi, 0.0), 18), 17);
   for (double angle : {1e300, -1e300, 1e-300, -1e-300, 4.0 * kPi + 0.1, -7.5}) {
     const int bin = fabric::angle_bin(angle, 36);
@@ -479,7 +518,8 @@ TEST(AngleBin, AnyFiniteAngleIsInRange) {
   }
 }
 
-TEST(MakeContact, NormalAndForceComponents) {
+TEST(MakeContact, NormalAndForceComponents)
+{
   // l along +y, force on b (3, 4): fn = f.n = 4, ft = f.t with t = (-1, 0): -3
   const Contact c = fabric::make_contact(1, 2, 0.0, 0.002, 3.0, 4.0, 0.002);
   EXPECT_EQ(c.a, 1);
@@ -493,7 +533,8 @@ TEST(MakeContact, NormalAndForceComponents) {
   EXPECT_TRUE(fabric::has_normal(c));
 }
 
-TEST(MakeContact, CoincidentCentresHaveNoNormal) {
+TEST(MakeContact, CoincidentCentresHaveNoNormal)
+{
   // |l| <= 1e-12 (r_a + r_b), whatever the force (LIGGGHTS gives NaN there)
   const double radius_sum = 0.002;
   for (double d : {0.0, 1e-300, 1e-20, 1e-12 * radius_sum}) {
@@ -510,7 +551,8 @@ TEST(MakeContact, CoincidentCentresHaveNoNormal) {
   EXPECT_FALSE(fabric::has_normal(fabric::make_contact(1, 2, 1.0, 0.0, 1.0, 0.0, kNaN)));
 }
 
-TEST(MakeContact, NearlyCoincidentCentresStillHaveANormal) {
+TEST(MakeContact, NearlyCoincidentCentresStillHaveANormal)
+{
   // 1e-14 is 5e-12 of the radius sum: the direction is still well defined
   const Contact c = fabric::make_contact(1, 2, 1e-14, 0.0, 169000.0, 0.0, 0.002);
   EXPECT_TRUE(fabric::has_normal(c));
@@ -523,7 +565,8 @@ TEST(MakeContact, NearlyCoincidentCentresStillHaveANormal) {
   EXPECT_FALSE(fabric::has_normal(fabric::make_contact(1, 2, 0.0, 0.0, 0.0, 0.0, 0.0)));
 }
 
-TEST(HasNormal, NaNOrZeroNormals) {
+TEST(HasNormal, NaNOrZeroNormals)
+{
   EXPECT_TRUE(fabric::has_normal(contact_at(deg(30), 1.0)));
   EXPECT_FALSE(fabric::has_normal(Contact{0, 1, kNaN, 0.0, 1.0, 0.0, 0.0, 0.0}));
   EXPECT_FALSE(fabric::has_normal(Contact{0, 1, 0.0, kInf, 1.0, 0.0, 0.0, 0.0}));
@@ -532,13 +575,15 @@ TEST(HasNormal, NaNOrZeroNormals) {
 
 // A contact with NaN normal and forces (as computed from coincident centres
 // before the guard), and one without a normal as make_contact returns it.
-std::vector<Contact> with_normal_less_contacts(std::vector<Contact> good) {
+std::vector<Contact> with_normal_less_contacts(std::vector<Contact> good)
+{
   good.push_back(Contact{0, 2, kNaN, kNaN, kNaN, kNaN, 0.0, 0.0});
   good.push_back(fabric::make_contact(1, 2, 0.0, 0.0, kNaN, kNaN, 0.002));
   return good;
 }
 
-TEST(NoNormal, LeftOutOfTheHistogram) {
+TEST(NoNormal, LeftOutOfTheHistogram)
+{
   const std::vector<Contact> good = {contact_at(deg(10), 2.0, 0.5), contact_at(deg(100), 1.0)};
   const fabric::Histogram expected = fabric::polar_histogram(good, 18);
   const fabric::Histogram h = fabric::polar_histogram(with_normal_less_contacts(good), 18);
@@ -548,12 +593,13 @@ TEST(NoNormal, LeftOutOfTheHistogram) {
   EXPECT_EQ(h.empty_bins, 14);
 }
 
-TEST(NoNormal, LeftOutOfTheTensorsAndTheStress) {
+TEST(NoNormal, LeftOutOfTheTensorsAndTheStress)
+{
   const std::vector<Contact> good = {contact_at(deg(0), 2.0, 0.5, 0.002),
                                      contact_at(deg(90), 1.0, 0.0, 0.002)};
   const std::vector<Contact> all = with_normal_less_contacts(good);
   const fabric::Anisotropy fa = fabric::normal_anisotropy_tensor(all);
-  EXPECT_NEAR(fa.a, 0.0, kTol);  // phi = diag(1/2, 1/2): two contacts, not four
+  EXPECT_NEAR(fa.a, 0.0, kTol); // phi = diag(1/2, 1/2): two contacts, not four
   const fabric::ForceAnisotropy ft = fabric::force_anisotropy_tensor(all, fa);
   // chi_n = diag(2, 1)/2: f0 = 1.5, an = 2 (1 - 1/2) / 1.5 = 2/3 along x
   EXPECT_NEAR(ft.f0, 1.5, kTol);
@@ -563,20 +609,21 @@ TEST(NoNormal, LeftOutOfTheTensorsAndTheStress) {
   EXPECT_TRUE(sigma.allFinite());
   EXPECT_NEAR(sigma(0, 0), 2.0 * 0.002 / 1e-4, 1e-9);
   EXPECT_NEAR(sigma(1, 1), 1.0 * 0.002 / 1e-4, 1e-9);
-  EXPECT_NEAR(sigma(1, 0), 0.5 * 0.002 / 1e-4, 1e-9);  // ft = 0.5 along +y on l along x
+  EXPECT_NEAR(sigma(1, 0), 0.5 * 0.002 / 1e-4, 1e-9); // ft = 0.5 along +y on l along x
   EXPECT_NEAR(sigma(0, 1), 0.0, 1e-9);
 }
 
-TEST(NoNormal, OnlyContactsWithoutNormalGiveZeros) {
+TEST(NoNormal, OnlyContactsWithoutNormalGiveZeros)
+{
   const std::vector<Contact> none = with_normal_less_contacts({});
   const fabric::Histogram h = fabric::polar_histogram(none, 18);
   EXPECT_EQ(h.empty_bins, 18);
-  for (const fabric::Anisotropy& f :
+  for (const fabric::Anisotropy &f :
        {fabric::normal_anisotropy_histogram(h), fabric::normal_anisotropy_tensor(none)}) {
     EXPECT_EQ(f.a, 0.0);
     EXPECT_EQ(f.theta, 0.0);
   }
-  for (const fabric::ForceAnisotropy& f :
+  for (const fabric::ForceAnisotropy &f :
        {fabric::force_anisotropy_histogram(h), fabric::force_anisotropy_tensor(none, {0.0, 0.0})}) {
     EXPECT_EQ(f.an, 0.0);
     EXPECT_EQ(f.f0, 0.0);
@@ -591,7 +638,8 @@ TEST(NoNormal, OnlyContactsWithoutNormalGiveZeros) {
 // Fabric: N = 4, sum N_g cos 2th_g = 4 cos 20 deg, so a = (2c/4) 4 = 2c at 10 deg,
 // c = dth/sin dth (the histogram cannot resolve inside a bin); tensor: a = 2 at 0.
 // Forces: f0 = 5, an = (c/(pi f0)) |2 f0 e^(i 20 deg) dth| = 2 c dth / pi at 10 deg.
-TEST(OneBin, AllContactsAlongOneDirection) {
+TEST(OneBin, AllContactsAlongOneDirection)
+{
   const std::vector<Contact> contacts = {contact_at(0.0, 5.0), contact_at(0.0, 5.0)};
   const fabric::Histogram h = fabric::polar_histogram(contacts, 18);
   EXPECT_EQ(h.count[0], 2.0);
@@ -618,7 +666,8 @@ TEST(OneBin, AllContactsAlongOneDirection) {
 
 // ---- no contacts at all ---------------------------------------------------------
 
-TEST(NoContacts, EverythingIsZeroAndFinite) {
+TEST(NoContacts, EverythingIsZeroAndFinite)
+{
   const std::vector<Contact> none;
   const fabric::Histogram h = fabric::polar_histogram(none, 18);
   EXPECT_EQ(h.empty_bins, 18);
@@ -627,7 +676,7 @@ TEST(NoContacts, EverythingIsZeroAndFinite) {
     EXPECT_EQ(h.mean_fn[g], 0.0);
     EXPECT_EQ(h.mean_ft[g], 0.0);
   }
-  for (const fabric::Anisotropy& f :
+  for (const fabric::Anisotropy &f :
        {fabric::normal_anisotropy_histogram(h), fabric::normal_anisotropy_tensor(none)}) {
     EXPECT_EQ(f.a, 0.0);
     EXPECT_EQ(f.theta, 0.0);
@@ -636,7 +685,7 @@ TEST(NoContacts, EverythingIsZeroAndFinite) {
   const fabric::ForceAnisotropy tensor = fabric::force_anisotropy_tensor(none, {0.0, 0.0});
   EXPECT_EQ(binned.empty_bins, 18);
   EXPECT_EQ(tensor.empty_bins, 0);
-  for (const fabric::ForceAnisotropy& f : {binned, tensor}) {
+  for (const fabric::ForceAnisotropy &f : {binned, tensor}) {
     EXPECT_EQ(f.an, 0.0);
     EXPECT_EQ(f.theta_n, 0.0);
     EXPECT_EQ(f.f0, 0.0);
@@ -651,4 +700,4 @@ TEST(NoContacts, EverythingIsZeroAndFinite) {
   EXPECT_TRUE(fabric::love_weber_stress(none, 1.0).isZero(0.0));
 }
 
-}  // namespace
+} // namespace

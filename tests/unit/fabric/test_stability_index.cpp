@@ -15,31 +15,37 @@ namespace {
 constexpr double kPi = 3.141592653589793238462643383280;
 constexpr double kTol = 1e-12;
 
-std::vector<double> radians(const std::vector<double>& degrees) {
+std::vector<double> radians(const std::vector<double> &degrees)
+{
   std::vector<double> out;
   for (double d : degrees) out.push_back(d * kPi / 180.0);
   return out;
 }
 
-double gsi_deg(const std::vector<double>& degrees) {
+double gsi_deg(const std::vector<double> &degrees)
+{
   return fabric::stability_index(radians(degrees));
 }
 
 // ---- spec worked values -----------------------------------------------------
 
-TEST(StabilityIndex, ThreeEvenlySpacedContactsAreFullyStable) {
+TEST(StabilityIndex, ThreeEvenlySpacedContactsAreFullyStable)
+{
   EXPECT_NEAR(gsi_deg({0, 120, 240}), 0.0, kTol);
 }
 
-TEST(StabilityIndex, TwoContactsAtRightAngleGiveAQuarter) {
+TEST(StabilityIndex, TwoContactsAtRightAngleGiveAQuarter)
+{
   EXPECT_NEAR(gsi_deg({0, 90}), 0.25, kTol);
 }
 
-TEST(StabilityIndex, ThreeContactsOnAHalfCircleGiveSixtyOverThreeSixty) {
+TEST(StabilityIndex, ThreeContactsOnAHalfCircleGiveSixtyOverThreeSixty)
+{
   EXPECT_NEAR(gsi_deg({0, 90, 180}), 60.0 / 360.0, kTol);
 }
 
-TEST(StabilityIndex, HexagonalPackingIsFullyStable) {
+TEST(StabilityIndex, HexagonalPackingIsFullyStable)
+{
   EXPECT_NEAR(gsi_deg({0, 60, 120, 180, 240, 300}), 0.0, kTol);
   EXPECT_NEAR(gsi_deg({30, 90, 150, 210, 270, 330}), 0.0, kTol);
 }
@@ -51,57 +57,64 @@ TEST(StabilityIndex, HexagonalPackingIsFullyStable) {
 //   anchor 200: ideals 200, 320, 80 vs 200, 350, 10 -> 0 + 30 +  70 = 100
 //   anchor 350: ideals 350, 110, 230 vs 350, 10, 200 -> 0 + 100 + 30 = 130
 // D = 100 deg, lambda = 100/360 = 5/18. Matching wraps past 360 for two anchors.
-TEST(StabilityIndex, HandWorkedCaseAcrossZero) {
+TEST(StabilityIndex, HandWorkedCaseAcrossZero)
+{
   EXPECT_NEAR(gsi_deg({350, 10, 200}), 100.0 / 360.0, kTol);
 }
 
 // Five contacts 72 deg apart, one moved by 7 deg (order unchanged). Anchoring at
 // an unmoved contact leaves a single misfit of 7 deg; anchoring at the moved one
 // misfits the other four by 7 deg each (28). D = 7 deg.
-TEST(StabilityIndex, OneDisplacedContactCostsItsDisplacement) {
+TEST(StabilityIndex, OneDisplacedContactCostsItsDisplacement)
+{
   EXPECT_NEAR(gsi_deg({0, 72, 144 + 7, 216, 288}), 7.0 / 360.0, kTol);
 }
 
 // Two contacts at the same point: the best ideal partner is 180 deg away, so
 // D = 180 deg and lambda = 0.5, the largest value two contacts can give.
-TEST(StabilityIndex, CoincidentPairGivesOneHalf) {
+TEST(StabilityIndex, CoincidentPairGivesOneHalf)
+{
   EXPECT_NEAR(gsi_deg({40, 40}), 0.5, kTol);
 }
 
 // ---- invariances and edge cases ---------------------------------------------
 
-TEST(StabilityIndex, NoOrOneContactIsUnstable) {
+TEST(StabilityIndex, NoOrOneContactIsUnstable)
+{
   EXPECT_EQ(fabric::stability_index({}), 1.0);
   EXPECT_EQ(fabric::stability_index({1.234}), 1.0);
 }
 
-TEST(StabilityIndex, AcceptsAnglesInAnyRange) {
+TEST(StabilityIndex, AcceptsAnglesInAnyRange)
+{
   EXPECT_NEAR(gsi_deg({-120, 0, 120}), 0.0, kTol);
   EXPECT_NEAR(gsi_deg({360, 480, 600}), 0.0, kTol);
   EXPECT_NEAR(gsi_deg({-360, 90 - 720}), 0.25, kTol);
 }
 
-TEST(StabilityIndex, InvariantUnderRotation) {
+TEST(StabilityIndex, InvariantUnderRotation)
+{
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
   for (int trial = 0; trial < 20; ++trial) {
     std::vector<double> contacts(2 + trial % 6);
-    for (double& c : contacts) c = angle(rng);
+    for (double &c : contacts) c = angle(rng);
     const double reference = fabric::stability_index(contacts);
     for (double shift : {-7.0, -1.0, 0.3, 2.0 * kPi, 11.0}) {
       std::vector<double> rotated = contacts;
-      for (double& c : rotated) c += shift;
+      for (double &c : rotated) c += shift;
       EXPECT_NEAR(fabric::stability_index(rotated), reference, 1e-12);
     }
   }
 }
 
-TEST(StabilityIndex, InvariantUnderContactOrder) {
+TEST(StabilityIndex, InvariantUnderContactOrder)
+{
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> angle(-10.0, 10.0);
   for (int trial = 0; trial < 20; ++trial) {
     std::vector<double> contacts(2 + trial % 7);
-    for (double& c : contacts) c = angle(rng);
+    for (double &c : contacts) c = angle(rng);
     const double reference = fabric::stability_index(contacts);
     for (int shuffle = 0; shuffle < 5; ++shuffle) {
       std::shuffle(contacts.begin(), contacts.end(), rng);
@@ -113,16 +126,18 @@ TEST(StabilityIndex, InvariantUnderContactOrder) {
 // lambda is not bounded by 1: six coincident contacts misfit by
 // 0 + 60 + 120 + 180 + 120 + 60 = 540 deg, lambda = 1.5. So the value 1 given to
 // particles with 0 or 1 contact is a convention, not the worst case.
-TEST(StabilityIndex, ClusteredContactsCanExceedOne) {
+TEST(StabilityIndex, ClusteredContactsCanExceedOne)
+{
   EXPECT_NEAR(gsi_deg({0, 0, 0, 0, 0, 0}), 1.5, kTol);
 }
 
-TEST(StabilityIndex, IsNonNegativeAndFinite) {
+TEST(StabilityIndex, IsNonNegativeAndFinite)
+{
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<double> contacts(2 + trial % 9);
-    for (double& c : contacts) c = angle(rng);
+    for (double &c : contacts) c = angle(rng);
     const double lambda = fabric::stability_index(contacts);
     EXPECT_TRUE(std::isfinite(lambda));
     EXPECT_GE(lambda, 0.0);
@@ -131,17 +146,18 @@ TEST(StabilityIndex, IsNonNegativeAndFinite) {
 
 // A contact without a normal (coincident centres) has a NaN angle: it has no
 // place on the circle and is left out, never turning lambda into NaN or inf.
-TEST(StabilityIndex, NonFiniteAnglesAreLeftOut) {
+TEST(StabilityIndex, NonFiniteAnglesAreLeftOut)
+{
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> three = radians({0, 120, 240});
   three.push_back(nan);
   EXPECT_NEAR(fabric::stability_index(three), 0.0, kTol);
-  EXPECT_EQ(fabric::stability_index({0.0, nan}), 1.0);  // one contact with a place
+  EXPECT_EQ(fabric::stability_index({0.0, nan}), 1.0); // one contact with a place
   EXPECT_EQ(fabric::stability_index({nan, inf, -inf}), 1.0);
   std::vector<double> quarter = radians({0, 90});
   quarter.insert(quarter.begin() + 1, nan);
   EXPECT_NEAR(fabric::stability_index(quarter), 0.25, kTol);
 }
 
-}  // namespace
+} // namespace

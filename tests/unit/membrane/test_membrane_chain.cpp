@@ -7,25 +7,29 @@
 
 #include "membrane_chain.h"
 
+using Eigen::Vector2d;
 using membrane::ChainFinder;
 using membrane::ChainResult;
 using membrane::Disk;
 using membrane::Platens;
 using membrane::Polyline;
 using membrane::Side;
-using Eigen::Vector2d;
 
 namespace {
 
-const double kH = std::sqrt(3.0) / 2.0;  // row spacing of a hexagonal packing of unit disks
+const double kH = std::sqrt(3.0) / 2.0; // row spacing of a hexagonal packing of unit disks
 const double kR = 0.5;
 
-double row_y(double row) { return kR + row * kH; }
+double row_y(double row)
+{
+  return kR + row * kH;
+}
 
 // cols x rows equal disks (d = 1) touching; odd rows shifted by +1/2, so the
 // right edge is column cols-1 of every row (x = cols-1 on even rows, cols-1/2
 // on odd rows) and the left edge column 0. Tag = row * cols + col + 1.
-std::vector<Disk> hex_block(int cols, int rows) {
+std::vector<Disk> hex_block(int cols, int rows)
+{
   std::vector<Disk> d;
   for (int row = 0; row < rows; ++row)
     for (int col = 0; col < cols; ++col)
@@ -33,21 +37,27 @@ std::vector<Disk> hex_block(int cols, int rows) {
   return d;
 }
 
-Platens platens_for(int rows) { return {0.0, row_y(rows - 1) + kR}; }
+Platens platens_for(int rows)
+{
+  return {0.0, row_y(rows - 1) + kR};
+}
 
-std::vector<long> tags_of(const std::vector<Disk>& d, const std::vector<int>& idx) {
+std::vector<long> tags_of(const std::vector<Disk> &d, const std::vector<int> &idx)
+{
   std::vector<long> t;
   for (int i : idx) t.push_back(d[i].tag);
   return t;
 }
 
-std::vector<long> sorted_tags_of(const std::vector<Disk>& d, const std::vector<int>& idx) {
+std::vector<long> sorted_tags_of(const std::vector<Disk> &d, const std::vector<int> &idx)
+{
   std::vector<long> t = tags_of(d, idx);
   std::sort(t.begin(), t.end());
   return t;
 }
 
-int index_of(const std::vector<Disk>& d, long tag) {
+int index_of(const std::vector<Disk> &d, long tag)
+{
   for (std::size_t i = 0; i < d.size(); ++i)
     if (d[i].tag == tag) return static_cast<int>(i);
   return -1;
@@ -55,27 +65,29 @@ int index_of(const std::vector<Disk>& d, long tag) {
 
 // The telescoping identity of the spec: sum of chain forces = p t (-Dy, Dx)
 // (right) / p t (Dy, -Dx) (left), D = end - start of the polyline.
-void expect_force_balance(const Polyline& pl, Side side, double p, double t) {
+void expect_force_balance(const Polyline &pl, Side side, double p, double t)
+{
   ASSERT_GE(pl.size(), 2u);
   const std::vector<Vector2d> f = membrane::chain_forces(pl, side, p, t);
   ASSERT_EQ(f.size(), pl.size() - 1);
   Vector2d sum = Vector2d::Zero();
   double scale = 0.0;
-  for (const Vector2d& fk : f) {
+  for (const Vector2d &fk : f) {
     sum += fk;
     scale += fk.norm();
   }
   const Vector2d D = pl.back() - pl.front();
-  const Vector2d expected =
-      side == Side::Right ? Vector2d(-p * t * D.y(), p * t * D.x()) : Vector2d(p * t * D.y(), -p * t * D.x());
-  EXPECT_LE((sum - expected).norm(), 1e-12 * scale) << "sum " << sum.transpose() << " expected "
-                                                     << expected.transpose();
+  const Vector2d expected = side == Side::Right ? Vector2d(-p * t * D.y(), p * t * D.x())
+                                                : Vector2d(p * t * D.y(), -p * t * D.x());
+  EXPECT_LE((sum - expected).norm(), 1e-12 * scale)
+      << "sum " << sum.transpose() << " expected " << expected.transpose();
 }
 
 // The finder's binned escapee test must agree with the brute-force parity test:
 // every non-chain disk strictly between the platens that is outside is listed,
 // and the only other listed disks are the pruned ones.
-int check_escapees(const std::vector<Disk>& d, const ChainResult& r, Side side, Platens pl) {
+int check_escapees(const std::vector<Disk> &d, const ChainResult &r, Side side, Platens pl)
+{
   std::vector<char> in_chain(d.size(), 0), listed(d.size(), 0);
   for (int i : r.chain) in_chain[i] = 1;
   for (int i : r.escaped) listed[i] = 1;
@@ -96,15 +108,17 @@ int check_escapees(const std::vector<Disk>& d, const ChainResult& r, Side side, 
   return outside;
 }
 
-std::vector<long> right_edge_tags(int cols, int rows) {
+std::vector<long> right_edge_tags(int cols, int rows)
+{
   std::vector<long> t;
   for (int row = 0; row < rows; ++row) t.push_back(row * cols + cols);
   return t;
 }
 
-}  // namespace
+} // namespace
 
-TEST(MembraneChain, HexBlockRightEdge) {
+TEST(MembraneChain, HexBlockRightEdge)
+{
   const auto d = hex_block(6, 10);
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
@@ -119,11 +133,12 @@ TEST(MembraneChain, HexBlockRightEdge) {
   EXPECT_NEAR(r.polyline[1].x(), 5.25, 1e-14);
   EXPECT_NEAR(r.polyline[1].y(), row_y(0.5), 1e-14);
   // The right chain walks up with the sample on its left: forces point to -x.
-  for (const Vector2d& f : membrane::chain_forces(r.polyline, Side::Right, 1e5, 1.0))
+  for (const Vector2d &f : membrane::chain_forces(r.polyline, Side::Right, 1e5, 1.0))
     EXPECT_LT(f.x(), 0.0);
 }
 
-TEST(MembraneChain, HexBlockLeftEdge) {
+TEST(MembraneChain, HexBlockLeftEdge)
+{
   const auto d = hex_block(6, 10);
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Left, platens_for(10), 1e-6);
@@ -131,11 +146,12 @@ TEST(MembraneChain, HexBlockLeftEdge) {
   EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{1, 7, 13, 19, 25, 31, 37, 43, 49, 55}));
   EXPECT_TRUE(r.escaped.empty());
   EXPECT_EQ(r.polyline.front(), Vector2d(0.0, 0.0));
-  for (const Vector2d& f : membrane::chain_forces(r.polyline, Side::Left, 1e5, 1.0))
+  for (const Vector2d &f : membrane::chain_forces(r.polyline, Side::Left, 1e5, 1.0))
     EXPECT_GT(f.x(), 0.0);
 }
 
-TEST(MembraneChain, BulgeIsFollowed) {
+TEST(MembraneChain, BulgeIsFollowed)
+{
   auto d = hex_block(6, 10);
   // r = 0.3 disk outside touching 30 = (5, y4) and 36 = (5.5, y5) only.
   const Vector2d a(5.0, row_y(4)), b(5.5, row_y(5));
@@ -155,7 +171,8 @@ TEST(MembraneChain, BulgeIsFollowed) {
 namespace {
 // Right edge of the 6x10 block plus a two-row arm sticking out at rows 6-7
 // with a disk (120) hanging below its tip between 102 and 103.
-std::vector<Disk> overhang_block() {
+std::vector<Disk> overhang_block()
+{
   auto d = hex_block(6, 10);
   d.push_back({101, 6.0, row_y(6), kR});
   d.push_back({102, 7.0, row_y(6), kR});
@@ -165,16 +182,17 @@ std::vector<Disk> overhang_block() {
   d.push_back({120, 7.5, row_y(5), kR});
   return d;
 }
-}  // namespace
+} // namespace
 
-TEST(MembraneChain, OverhangGoesDownBeforeUp) {
+TEST(MembraneChain, OverhangGoesDownBeforeUp)
+{
   const auto d = overhang_block();
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(tags_of(d, r.chain),
             (std::vector<long>{6, 12, 18, 24, 30, 36, 101, 102, 120, 103, 112, 111, 48, 54, 60}));
-  EXPECT_TRUE(r.escaped.empty());  // 42 at (5, y6) is under the arm, inside
+  EXPECT_TRUE(r.escaped.empty()); // 42 at (5, y6) is under the arm, inside
   bool goes_down = false;
   for (std::size_t k = 0; k + 1 < r.polyline.size(); ++k)
     if (r.polyline[k + 1].y() < r.polyline[k].y() - 0.1) goes_down = true;
@@ -189,15 +207,17 @@ TEST(MembraneChain, OverhangGoesDownBeforeUp) {
 namespace {
 // A disk outside the right edge at mid-height, its gap to 24 and 36 exactly g
 // (and about 2g to 30).
-std::vector<Disk> gap_block(double g) {
+std::vector<Disk> gap_block(double g)
+{
   auto d = hex_block(6, 10);
   const double dx = std::sqrt((1.0 + g) * (1.0 + g) - kH * kH);
   d.push_back({100, 5.5 + dx, row_y(4), kR});
   return d;
 }
-}  // namespace
+} // namespace
 
-TEST(MembraneChain, GapJustAboveToleranceIsNotLinked) {
+TEST(MembraneChain, GapJustAboveToleranceIsNotLinked)
+{
   const double tol = 1e-3;
   const auto d = gap_block(1.01 * tol);
   ChainFinder cf;
@@ -210,7 +230,8 @@ TEST(MembraneChain, GapJustAboveToleranceIsNotLinked) {
   EXPECT_EQ(r.pruned, 0);
 }
 
-TEST(MembraneChain, GapJustBelowToleranceIsLinked) {
+TEST(MembraneChain, GapJustBelowToleranceIsLinked)
+{
   const double tol = 1e-3;
   const auto d = gap_block(0.99 * tol);
   ChainFinder cf;
@@ -222,10 +243,11 @@ TEST(MembraneChain, GapJustBelowToleranceIsLinked) {
   EXPECT_TRUE(cf.linked(x, index_of(d, 36)));
   EXPECT_FALSE(cf.linked(x, index_of(d, 30)));
   EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{6, 12, 18, 24, 100, 36, 42, 48, 54, 60}));
-  EXPECT_TRUE(r.escaped.empty());  // 30 is now inside the chain
+  EXPECT_TRUE(r.escaped.empty()); // 30 is now inside the chain
 }
 
-TEST(MembraneChain, IsolatedOutsideDiskEscapes) {
+TEST(MembraneChain, IsolatedOutsideDiskEscapes)
+{
   auto d = hex_block(6, 10);
   d.push_back({100, 8.0, row_y(4.5), 0.4});
   ChainFinder cf;
@@ -239,20 +261,22 @@ TEST(MembraneChain, IsolatedOutsideDiskEscapes) {
   EXPECT_DOUBLE_EQ(membrane::escapee_force(d[r.escaped[0]], Side::Left, 1e5, 0.5).x(), 4e4);
 }
 
-TEST(MembraneChain, DisksAbovePlatenOrInsideAreNotEscapees) {
+TEST(MembraneChain, DisksAbovePlatenOrInsideAreNotEscapees)
+{
   auto d = hex_block(6, 10);
   const Platens pl = platens_for(10);
-  d.push_back({100, 8.0, pl.yhi + 1.0, 0.4});  // outside in x but above the top platen
-  d.push_back({101, 2.5, row_y(4.5), 0.1});    // rattler in a pore: inside
+  d.push_back({100, 8.0, pl.yhi + 1.0, 0.4}); // outside in x but above the top platen
+  d.push_back({101, 2.5, row_y(4.5), 0.1});   // rattler in a pore: inside
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, pl, 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_TRUE(r.escaped.empty());
 }
 
-TEST(MembraneChain, DeadEndIsPrunedAndEscapes) {
+TEST(MembraneChain, DeadEndIsPrunedAndEscapes)
+{
   auto d = hex_block(6, 10);
-  d.push_back({100, 6.5, row_y(5), kR});  // touches 36 only
+  d.push_back({100, 6.5, row_y(5), kR}); // touches 36 only
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
@@ -262,7 +286,8 @@ TEST(MembraneChain, DeadEndIsPrunedAndEscapes) {
   EXPECT_EQ(r.escaped, std::vector<int>{index_of(d, 100)});
 }
 
-TEST(MembraneChain, HangingClusterIsPruned) {
+TEST(MembraneChain, HangingClusterIsPruned)
+{
   auto d = hex_block(6, 10);
   // A triangle 100-101-102 attached to the sample by 36 only: the walk loops
   // round it back to 36.
@@ -277,9 +302,10 @@ TEST(MembraneChain, HangingClusterIsPruned) {
   EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<long>{100, 101, 102}));
 }
 
-TEST(MembraneChain, GapAcrossWholeWidthFails) {
+TEST(MembraneChain, GapAcrossWholeWidthFails)
+{
   auto d = hex_block(6, 10);
-  for (Disk& k : d)
+  for (Disk &k : d)
     if (k.y > row_y(4.5)) k.y += 0.2;
   Platens pl = platens_for(10);
   pl.yhi += 0.2;
@@ -295,7 +321,8 @@ TEST(MembraneChain, GapAcrossWholeWidthFails) {
   EXPECT_FALSE(l.ok);
 }
 
-TEST(MembraneChain, NothingTouchesBottomFails) {
+TEST(MembraneChain, NothingTouchesBottomFails)
+{
   auto d = hex_block(6, 10);
   Platens pl = platens_for(10);
   pl.ylo = -0.5;
@@ -307,9 +334,10 @@ TEST(MembraneChain, NothingTouchesBottomFails) {
   EXPECT_FALSE(cf.find(d, Side::Right, {1.0, 0.0}, 1e-3).ok);
 }
 
-TEST(MembraneChain, RattlerStartFallsBackToNextCandidate) {
+TEST(MembraneChain, RattlerStartFallsBackToNextCandidate)
+{
   auto d = hex_block(6, 10);
-  d.push_back({100, 7.5, kR, kR});  // on the bottom platen, touching nothing
+  d.push_back({100, 7.5, kR, kR}); // on the bottom platen, touching nothing
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
@@ -318,7 +346,8 @@ TEST(MembraneChain, RattlerStartFallsBackToNextCandidate) {
   EXPECT_EQ(r.escaped, std::vector<int>{index_of(d, 100)});
 }
 
-TEST(MembraneChain, DetachedBottomClusterFallsBackToNextCandidate) {
+TEST(MembraneChain, DetachedBottomClusterFallsBackToNextCandidate)
+{
   auto d = hex_block(6, 10);
   // Three disks on the platen outside the sample, touching each other only.
   d.push_back({100, 7.5, kR, kR});
@@ -327,12 +356,13 @@ TEST(MembraneChain, DetachedBottomClusterFallsBackToNextCandidate) {
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
-  EXPECT_EQ(r.failed_starts, 1);  // 100 is skipped as visited by 101's walk
+  EXPECT_EQ(r.failed_starts, 1); // 100 is skipped as visited by 101's walk
   EXPECT_EQ(tags_of(d, r.chain), right_edge_tags(6, 10));
   EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<long>{100, 101, 102}));
 }
 
-TEST(MembraneChain, TallSingleDiskChain) {
+TEST(MembraneChain, TallSingleDiskChain)
+{
   std::vector<Disk> d = {{1, 0.0, 0.5, 0.5}, {2, 3.0, 0.5, 0.5}};
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, {0.0, 1.0}, 1e-9);
@@ -344,28 +374,31 @@ TEST(MembraneChain, TallSingleDiskChain) {
 }
 
 namespace {
-std::vector<Disk> perturbed_hex(int cols, int rows, unsigned seed, double amp) {
+std::vector<Disk> perturbed_hex(int cols, int rows, unsigned seed, double amp)
+{
   auto d = hex_block(cols, rows);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-amp, amp);
-  for (Disk& k : d) {
+  for (Disk &k : d) {
     k.x += u(rng);
     k.y += u(rng);
     k.r *= 1.0 + u(rng);
   }
   return d;
 }
-}  // namespace
+} // namespace
 
-TEST(MembraneChain, ForceBalanceOnRandomPerturbations) {
-  ChainFinder cf;  // reused across samples on purpose
+TEST(MembraneChain, ForceBalanceOnRandomPerturbations)
+{
+  ChainFinder cf; // reused across samples on purpose
   ChainResult r;
   int found = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {
     auto d = perturbed_hex(8, 12, seed, 0.02);
-    if (seed % 2) {  // and sometimes the overhang arm, perturbed
+    if (seed % 2) { // and sometimes the overhang arm, perturbed
       auto o = overhang_block();
-      for (std::size_t i = 60; i < o.size(); ++i) d.push_back({o[i].tag + 1000, o[i].x + 2.0, o[i].y, o[i].r});
+      for (std::size_t i = 60; i < o.size(); ++i)
+        d.push_back({o[i].tag + 1000, o[i].x + 2.0, o[i].y, o[i].r});
     }
     for (Side side : {Side::Left, Side::Right}) {
       cf.find(d, side, platens_for(12), 0.1, r);
@@ -380,21 +413,22 @@ TEST(MembraneChain, ForceBalanceOnRandomPerturbations) {
   EXPECT_EQ(found, 80);
 }
 
-TEST(MembraneChain, KeptChainPolylineFollowsMovedDisks) {
+TEST(MembraneChain, KeptChainPolylineFollowsMovedDisks)
+{
   auto d = overhang_block();
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
-  for (Disk& k : d) {
+  for (Disk &k : d) {
     k.x += u(rng);
     k.y += u(rng);
   }
   const Polyline moved = membrane::polyline_from_chain(d, r.chain, platens_for(10));
   ASSERT_EQ(moved.size(), r.chain.size() + 1);
-  const Disk& a = d[r.chain[3]];
-  const Disk& b = d[r.chain[4]];
+  const Disk &a = d[r.chain[3]];
+  const Disk &b = d[r.chain[4]];
   EXPECT_NEAR(moved[4].x(), a.x + a.r / (a.r + b.r) * (b.x - a.x), 1e-15);
   EXPECT_NEAR(moved[4].y(), a.y + a.r / (a.r + b.r) * (b.y - a.y), 1e-15);
   EXPECT_EQ(moved.front(), Vector2d(d[r.chain.front()].x, 0.0));
@@ -407,7 +441,8 @@ namespace {
 // x = 0.5..4.5 (5 disks). The right half is perturbed at random and mirrored
 // exactly (5 - x is exact for x in [2.5, 5.5]); a disk's partner has tag
 // 1000 + tag. Middle disks of odd rows only move vertically.
-std::vector<Disk> mirrored_block(int rows, unsigned seed, double amp) {
+std::vector<Disk> mirrored_block(int rows, unsigned seed, double amp)
+{
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-amp, amp);
   std::vector<Disk> d;
@@ -428,19 +463,23 @@ std::vector<Disk> mirrored_block(int rows, unsigned seed, double amp) {
       }
     }
   }
-  std::sort(d.begin(), d.end(), [](const Disk& a, const Disk& b) { return a.tag < b.tag; });
+  std::sort(d.begin(), d.end(), [](const Disk &a, const Disk &b) { return a.tag < b.tag; });
   return d;
 }
 
-long mirror_tag(long tag) { return tag > 1000 ? tag - 1000 : tag + 1000; }
-}  // namespace
+long mirror_tag(long tag)
+{
+  return tag > 1000 ? tag - 1000 : tag + 1000;
+}
+} // namespace
 
-TEST(MembraneChain, MirrorSymmetricSampleBalances) {
+TEST(MembraneChain, MirrorSymmetricSampleBalances)
+{
   for (unsigned seed = 0; seed < 20; ++seed) {
     const double amp = seed == 0 ? 0.0 : 0.02;
     const auto d = mirrored_block(11, seed, amp);
     Platens pl{std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
-    for (const Disk& k : d) {
+    for (const Disk &k : d) {
       pl.ylo = std::min(pl.ylo, k.y - k.r);
       pl.yhi = std::max(pl.yhi, k.y + k.r);
     }
@@ -473,11 +512,12 @@ TEST(MembraneChain, MirrorSymmetricSampleBalances) {
   }
 }
 
-TEST(MembraneChain, ShuffledInputGivesSameTags) {
+TEST(MembraneChain, ShuffledInputGivesSameTags)
+{
   auto d = overhang_block();
   d.push_back({200, 6.5, row_y(3), kR});  // dead end on 24
-  d.push_back({201, 9.0, row_y(3), 0.3});  // isolated escapee
-  d.push_back({202, 7.5, kR, kR});         // rattler on the platen
+  d.push_back({201, 9.0, row_y(3), 0.3}); // isolated escapee
+  d.push_back({202, 7.5, kR, kR});        // rattler on the platen
   ChainFinder cf;
   for (Side side : {Side::Left, Side::Right}) {
     const ChainResult ref = cf.find(d, side, platens_for(10), 1e-6);
@@ -498,7 +538,8 @@ TEST(MembraneChain, ShuffledInputGivesSameTags) {
   EXPECT_EQ(r.pruned, 1);
 }
 
-TEST(MembraneChain, TieOnStartXTakesLowestTag) {
+TEST(MembraneChain, TieOnStartXTakesLowestTag)
+{
   // Two bottom-touching disks with the same x (a small one overlapping a big
   // one) and a disk on top: the start is the lower tag of the two.
   ChainFinder cf;
@@ -516,7 +557,8 @@ TEST(MembraneChain, TieOnStartXTakesLowestTag) {
   }
 }
 
-TEST(MembraneChain, LargeLooseSetNeverHangs) {
+TEST(MembraneChain, LargeLooseSetNeverHangs)
+{
   // 1000 random disks, mostly unconnected, plus one far-away outlier that must
   // not blow up the cell grid.
   std::mt19937 rng(11);

@@ -6,13 +6,14 @@
 
 #include "membrane_chain.h"
 
+using Eigen::Vector2d;
 using membrane::BandSlices;
 using membrane::Platens;
 using membrane::Polyline;
 using membrane::Side;
-using Eigen::Vector2d;
 
-TEST(MembraneMeasure, RectangleAreaAndWidth) {
+TEST(MembraneMeasure, RectangleAreaAndWidth)
+{
   const Polyline left = {{0, 0}, {0, 2}}, right = {{3, 0}, {3, 2}};
   EXPECT_DOUBLE_EQ(membrane::sample_area(left, right), 6.0);
   EXPECT_DOUBLE_EQ(membrane::width_at(1.0, left, right), 3.0);
@@ -20,17 +21,19 @@ TEST(MembraneMeasure, RectangleAreaAndWidth) {
   EXPECT_DOUBLE_EQ(membrane::sample_area(right, left), -6.0);
 }
 
-TEST(MembraneMeasure, BulgedHexagonAreaAndWidth) {
+TEST(MembraneMeasure, BulgedHexagonAreaAndWidth)
+{
   // 3 x 2 rectangle with a triangle of area 1 on each side.
   const Polyline left = {{0, 0}, {-1, 1}, {0, 2}}, right = {{3, 0}, {4, 1}, {3, 2}};
   EXPECT_DOUBLE_EQ(membrane::sample_area(left, right), 8.0);
   EXPECT_DOUBLE_EQ(membrane::width_at(1.0, left, right), 5.0);
   EXPECT_DOUBLE_EQ(membrane::width_at(0.5, left, right), 4.0);
-  EXPECT_DOUBLE_EQ(membrane::sample_area(left, right) / 2.0, 4.0);  // mean width
+  EXPECT_DOUBLE_EQ(membrane::sample_area(left, right) / 2.0, 4.0); // mean width
   EXPECT_TRUE(std::isnan(membrane::width_at(3.0, left, right)));
 }
 
-TEST(MembraneMeasure, OverhangAreaAndOutermostWidth) {
+TEST(MembraneMeasure, OverhangAreaAndOutermostWidth)
+{
   const Polyline left = {{0, 0}, {0, 2}};
   const Polyline right = {{3, 0}, {3, 1}, {5, 1}, {5, 0.5}, {6, 0.5}, {6, 2}};
   // [0,3]x[0,2] + [3,5]x[1,2] + [5,6]x[0.5,2]
@@ -44,7 +47,8 @@ TEST(MembraneMeasure, OverhangAreaAndOutermostWidth) {
   EXPECT_DOUBLE_EQ(membrane::outermost_x_at(0.75, right, Side::Left), 3.0);
 }
 
-TEST(MembraneMeasure, OneSideAgainstStraightWall) {
+TEST(MembraneMeasure, OneSideAgainstStraightWall)
+{
   const Polyline right = {{3, 0}, {4, 1}, {3, 2}};
   EXPECT_DOUBLE_EQ(membrane::side_area(right, Side::Right, 0.0), 7.0);
   const Polyline left = {{0, 0}, {-1, 1}, {0, 2}};
@@ -53,10 +57,11 @@ TEST(MembraneMeasure, OneSideAgainstStraightWall) {
                    membrane::sample_area(left, Polyline{{3, 0}, {3, 2}}));
 }
 
-TEST(MembraneMeasure, OutsidePolylineParity) {
+TEST(MembraneMeasure, OutsidePolylineParity)
+{
   const Polyline right = {{3, 0}, {3, 1}, {5, 1}, {5, 0.5}, {6, 0.5}, {6, 2}};
   EXPECT_FALSE(membrane::outside_polyline({2.0, 0.75}, right, Side::Right));
-  EXPECT_TRUE(membrane::outside_polyline({4.0, 0.75}, right, Side::Right));  // under the overhang
+  EXPECT_TRUE(membrane::outside_polyline({4.0, 0.75}, right, Side::Right)); // under the overhang
   EXPECT_FALSE(membrane::outside_polyline({5.5, 0.75}, right, Side::Right));
   EXPECT_TRUE(membrane::outside_polyline({7.0, 1.5}, right, Side::Right));
   EXPECT_FALSE(membrane::outside_polyline({4.0, 1.5}, right, Side::Right));
@@ -67,7 +72,8 @@ TEST(MembraneMeasure, OutsidePolylineParity) {
   EXPECT_TRUE(membrane::outside_polyline({-2.0, 1.0}, left, Side::Left));
 }
 
-TEST(MembraneMeasure, HexBlockAreaFromChains) {
+TEST(MembraneMeasure, HexBlockAreaFromChains)
+{
   // 6 x 10 hexagonal block of unit disks: both chains zigzag identically, 5 apart.
   const double h = std::sqrt(3.0) / 2.0;
   std::vector<membrane::Disk> d;
@@ -83,7 +89,8 @@ TEST(MembraneMeasure, HexBlockAreaFromChains) {
   EXPECT_NEAR(membrane::width_at(0.5 * (pl.ylo + pl.yhi), l.polyline, r.polyline), 5.0, 1e-12);
 }
 
-TEST(MembraneBand, SlicesFollowTheEdge) {
+TEST(MembraneBand, SlicesFollowTheEdge)
+{
   BandSlices b;
   b.reset(Side::Right, {0.0, 4.0}, 1.0);
   ASSERT_EQ(b.extents().size(), 4u);
@@ -92,13 +99,13 @@ TEST(MembraneBand, SlicesFollowTheEdge) {
   b.add(5.5, 1.5, 0.5);
   b.add(9.5, 2.5, 0.5);
   b.add(4.5, 3.5, 0.5);
-  b.add(1.0, 3.5, 0.5);  // inner disk: does not move the edge
+  b.add(1.0, 3.5, 0.5); // inner disk: does not move the edge
   EXPECT_EQ(b.extents(), (std::vector<double>{5, 6, 10, 5}));
-  EXPECT_DOUBLE_EQ(b.outer_edge_near(0.2), 6.0);  // slices 0 and 1
+  EXPECT_DOUBLE_EQ(b.outer_edge_near(0.2), 6.0); // slices 0 and 1
   EXPECT_DOUBLE_EQ(b.outer_edge_near(3.2), 10.0);
-  EXPECT_FALSE(b.contains(3.6, 0.5, 0.5, 1.0));  // x + r = 4.1 < 6 - 1
-  EXPECT_TRUE(b.contains(4.6, 0.5, 0.5, 1.0));   // 5.1 >= 5
-  EXPECT_FALSE(b.contains(6.0, 3.5, 0.5, 2.0));  // near slice 2's bulge: 6.5 < 8
+  EXPECT_FALSE(b.contains(3.6, 0.5, 0.5, 1.0)); // x + r = 4.1 < 6 - 1
+  EXPECT_TRUE(b.contains(4.6, 0.5, 0.5, 1.0));  // 5.1 >= 5
+  EXPECT_FALSE(b.contains(6.0, 3.5, 0.5, 2.0)); // near slice 2's bulge: 6.5 < 8
   EXPECT_TRUE(b.contains(7.6, 3.5, 0.5, 2.0));
   // Below / above the platens clamp to the end slices.
   EXPECT_EQ(b.slice_of(-3.0), 0);
@@ -106,19 +113,21 @@ TEST(MembraneBand, SlicesFollowTheEdge) {
   EXPECT_EQ(b.slice_of(std::numeric_limits<double>::quiet_NaN()), 0);
 }
 
-TEST(MembraneBand, LeftSideAndEmptySlices) {
+TEST(MembraneBand, LeftSideAndEmptySlices)
+{
   BandSlices b;
-  b.reset(Side::Left, {0.0, 5.0}, 2.0);  // 3 slices, the last one shorter
+  b.reset(Side::Left, {0.0, 5.0}, 2.0); // 3 slices, the last one shorter
   ASSERT_EQ(b.extents().size(), 3u);
   b.add(1.0, 0.5, 0.5);
   EXPECT_DOUBLE_EQ(b.extents()[0], 0.5);
   EXPECT_EQ(b.extents()[2], std::numeric_limits<double>::max());
-  EXPECT_TRUE(b.contains(1.2, 0.5, 0.5, 0.3));    // 0.7 <= 0.5 + 0.3
-  EXPECT_FALSE(b.contains(1.4, 0.5, 0.5, 0.3));   // 0.9 >  0.8
-  EXPECT_TRUE(b.contains(100.0, 4.5, 0.5, 0.1));  // empty neighbourhood: never rejects
+  EXPECT_TRUE(b.contains(1.2, 0.5, 0.5, 0.3));   // 0.7 <= 0.5 + 0.3
+  EXPECT_FALSE(b.contains(1.4, 0.5, 0.5, 0.3));  // 0.9 >  0.8
+  EXPECT_TRUE(b.contains(100.0, 4.5, 0.5, 0.1)); // empty neighbourhood: never rejects
 }
 
-TEST(MembraneBand, ReductionOfPartialExtentsMatchesSerial) {
+TEST(MembraneBand, ReductionOfPartialExtentsMatchesSerial)
+{
   // Two "ranks" each see half of the disks; an element-wise max of their
   // vectors (what MPI_MAX does) equals the serial result.
   const Platens pl{0.0, 10.0};
@@ -137,7 +146,8 @@ TEST(MembraneBand, ReductionOfPartialExtentsMatchesSerial) {
 }
 
 // finish() only tabulates outer_edge_near: membership must not change.
-TEST(BandSlices, FinishGivesTheSameMembership) {
+TEST(BandSlices, FinishGivesTheSameMembership)
+{
   for (Side side : {Side::Left, Side::Right}) {
     BandSlices plain, tabulated;
     plain.reset(side, Platens{0.0, 10.0}, 1.3);
@@ -163,7 +173,7 @@ TEST(BandSlices, FinishGivesTheSameMembership) {
       EXPECT_EQ(plain.outer_edge_near(centres[k].y()), tabulated.outer_edge_near(centres[k].y()));
       inside += a;
     }
-    EXPECT_GT(inside, 50);   // the band is neither empty ...
-    EXPECT_LT(inside, 350);  // ... nor everything
+    EXPECT_GT(inside, 50);  // the band is neither empty ...
+    EXPECT_LT(inside, 350); // ... nor everything
   }
 }

@@ -30,7 +30,7 @@ std::vector<double> sample_record()
   return out.finish();
 }
 
-}  // namespace
+} // namespace
 
 TEST(MembraneRecord, RoundTripGivesEveryField)
 {
@@ -85,12 +85,12 @@ TEST(MembraneRecord, OtherVersionIsRefused)
 TEST(MembraneRecord, CutRecordIsRefused)
 {
   std::vector<double> rec = sample_record();
-  rec[2] = 8;   // the header says the record ends inside the tag list
+  rec[2] = 8; // the header says the record ends inside the tag list
   RestartRecordReader in = record_reader(rec.data(), rec.size());
   ASSERT_TRUE(in.ok());
   in.get();
   std::vector<long> tags;
-  get_tags(in, tags);   // 3 tags announced, 3 fit
+  get_tags(in, tags); // 3 tags announced, 3 fit
   std::vector<Disk> disks;
   get_disks(in, disks);
   EXPECT_FALSE(in.ok());

@@ -19,7 +19,8 @@ namespace {
 const double kH = std::sqrt(3.0) / 2.0;
 
 // cols x rows touching unit-diameter disks, odd rows shifted right by 1/2
-std::vector<Disk> hex_block(int cols, int rows) {
+std::vector<Disk> hex_block(int cols, int rows)
+{
   std::vector<Disk> d;
   for (int row = 0; row < rows; ++row)
     for (int col = 0; col < cols; ++col)
@@ -27,15 +28,21 @@ std::vector<Disk> hex_block(int cols, int rows) {
   return d;
 }
 
-Platens platens_for(int rows) { return {0.0, 0.5 + (rows - 1) * kH + 0.5}; }
+Platens platens_for(int rows)
+{
+  return {0.0, 0.5 + (rows - 1) * kH + 0.5};
+}
 
-std::vector<long> tags(const std::vector<Disk>& d, const std::vector<int>& idx) {
+std::vector<long> tags(const std::vector<Disk> &d, const std::vector<int> &idx)
+{
   std::vector<long> t;
   for (int i : idx) t.push_back(d[i].tag);
   return t;
 }
 
-DetectionWatch watch_of(const std::vector<Disk>& d, Platens pl, double tol, double budget, ChainResult& r) {
+DetectionWatch watch_of(const std::vector<Disk> &d, Platens pl, double tol, double budget,
+                        ChainResult &r)
+{
   ChainFinder finder;
   finder.find(d, Side::Right, pl, tol, r);
   DetectionWatch w;
@@ -43,9 +50,10 @@ DetectionWatch watch_of(const std::vector<Disk>& d, Platens pl, double tol, doub
   return w;
 }
 
-}  // namespace
+} // namespace
 
-TEST(DetectionWatch, TouchingBlockHasNothingNearItsThresholds) {
+TEST(DetectionWatch, TouchingBlockHasNothingNearItsThresholds)
+{
   // contacts have gap 0 and platen gaps 0, both 0.02 from tol = 0.02 >= budget 0.01
   const auto d = hex_block(6, 8);
   ChainResult r;
@@ -58,7 +66,8 @@ TEST(DetectionWatch, TouchingBlockHasNothingNearItsThresholds) {
   EXPECT_FALSE(membrane::watched_relation_changed(w, d, Side::Right, platens_for(8), 0.02));
 }
 
-TEST(DetectionWatch, PairNearTheToleranceIsWatchedExactly) {
+TEST(DetectionWatch, PairNearTheToleranceIsWatchedExactly)
+{
   // the right disk of row 2 moved out to a gap of 0.025 with both row-2 neighbours'
   // partner (row 2, col 4): within budget 0.01 of tol 0.02, not linked
   auto d = hex_block(6, 8);
@@ -69,7 +78,7 @@ TEST(DetectionWatch, PairNearTheToleranceIsWatchedExactly) {
   const DetectionWatch w = watch_of(d, pl, 0.02, 0.01, r);
   ASSERT_FALSE(w.always);
   bool found = false;
-  for (const auto& p : w.pairs)
+  for (const auto &p : w.pairs)
     if ((p.i == moved || p.j == moved) && (p.i == moved - 1 || p.j == moved - 1)) {
       found = true;
       EXPECT_FALSE(p.ij);
@@ -77,13 +86,14 @@ TEST(DetectionWatch, PairNearTheToleranceIsWatchedExactly) {
     }
   EXPECT_TRUE(found);
   auto now = d;
-  now[moved].x -= 0.004;   // gap 0.021: still not linked
+  now[moved].x -= 0.004; // gap 0.021: still not linked
   EXPECT_FALSE(membrane::watched_relation_changed(w, now, Side::Right, pl, 0.02));
-  now[moved].x -= 0.002;   // gap 0.019: linked now
+  now[moved].x -= 0.002; // gap 0.019: linked now
   EXPECT_TRUE(membrane::watched_relation_changed(w, now, Side::Right, pl, 0.02));
 }
 
-TEST(DetectionWatch, PlatenContactNearTheToleranceIsWatched) {
+TEST(DetectionWatch, PlatenContactNearTheToleranceIsWatched)
+{
   // the bottom-right disk lifted to a bottom gap of 0.015 (touching, within budget)
   auto d = hex_block(6, 8);
   d[5].y += 0.015;
@@ -100,7 +110,8 @@ TEST(DetectionWatch, PlatenContactNearTheToleranceIsWatched) {
   EXPECT_TRUE(membrane::watched_relation_changed(w, d, Side::Right, {-0.006, pl.yhi}, 0.02));
 }
 
-TEST(DetectionWatch, StartOrderIsWatchedWhenCandidatesAreClose) {
+TEST(DetectionWatch, StartOrderIsWatchedWhenCandidatesAreClose)
+{
   // a second bottom disk (tag 99) just inward of the start disk
   auto d = hex_block(6, 8);
   d.push_back({99, d[5].x - 0.004, 0.5, 0.5});
@@ -111,19 +122,21 @@ TEST(DetectionWatch, StartOrderIsWatchedWhenCandidatesAreClose) {
   ASSERT_EQ(tags(d, {r.chain.front()}).front(), 6);
   ASSERT_EQ(w.ahead.size(), 1u);
   auto now = d;
-  now.back().x = d[5].x;          // equal x: the lower tag (6) stays first
+  now.back().x = d[5].x; // equal x: the lower tag (6) stays first
   EXPECT_FALSE(membrane::watched_relation_changed(w, now, Side::Right, pl, 0.02));
-  now.back().x = d[5].x + 1e-9;   // ahead of the start disk
+  now.back().x = d[5].x + 1e-9; // ahead of the start disk
   EXPECT_TRUE(membrane::watched_relation_changed(w, now, Side::Right, pl, 0.02));
 }
 
-TEST(DetectionWatch, FailedStartsAndFailuresCannotBeWatched) {
+TEST(DetectionWatch, FailedStartsAndFailuresCannotBeWatched)
+{
   ChainResult r;
   r.ok = false;
   DetectionWatch w;
   membrane::watch_detection(hex_block(3, 3), r, platens_for(3), 0.02, 0.01, w);
   EXPECT_TRUE(w.always);
-  EXPECT_TRUE(membrane::watched_relation_changed(w, hex_block(3, 3), Side::Right, platens_for(3), 0.02));
+  EXPECT_TRUE(
+      membrane::watched_relation_changed(w, hex_block(3, 3), Side::Right, platens_for(3), 0.02));
   r.ok = true;
   r.chain = {2};
   r.failed_starts = 1;
@@ -135,15 +148,16 @@ TEST(DetectionWatch, FailedStartsAndFailuresCannotBeWatched) {
 // every disk moved less than half the budget, a new search gives exactly the
 // same chain and escapees. Random rough samples (radii shrunk so gaps spread
 // over 0..0.04 around tol 0.02) and random displacements below budget / 2.
-TEST(DetectionWatch, UnchangedWatchMeansUnchangedChain) {
+TEST(DetectionWatch, UnchangedWatchMeansUnchangedChain)
+{
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> shrink(0.0, 0.012), unit(-1.0, 1.0);
   const double tol = 0.02, budget = 0.01;
   int same = 0, flagged = 0, really_changed = 0;
   for (int sample = 0; sample < 40; ++sample) {
     auto base = hex_block(5, 10);
-    for (Disk& disk : base) disk.r -= shrink(rng);
-    for (Disk& disk : base) disk.x += 0.01 * unit(rng);
+    for (Disk &disk : base) disk.r -= shrink(rng);
+    for (Disk &disk : base) disk.x += 0.01 * unit(rng);
     const Platens pl{0.0, platens_for(10).yhi};
     ChainFinder finder;
     ChainResult r0;
@@ -155,10 +169,13 @@ TEST(DetectionWatch, UnchangedWatchMeansUnchangedChain) {
     for (int trial = 0; trial < 50; ++trial) {
       auto now = base;
       const double amp = 0.49 * budget * std::pow(0.5, trial % 6);
-      for (Disk& disk : now) {
+      for (Disk &disk : now) {
         double dx = unit(rng), dy = unit(rng);
         const double n = std::hypot(dx, dy);
-        if (n > 1.0) { dx /= n; dy /= n; }
+        if (n > 1.0) {
+          dx /= n;
+          dy /= n;
+        }
         disk.x += amp * dx;
         disk.y += amp * dy;
       }
@@ -166,14 +183,17 @@ TEST(DetectionWatch, UnchangedWatchMeansUnchangedChain) {
       if (membrane::watched_relation_changed(w, now, Side::Right, pl, tol)) {
         ++flagged;
         finder.find(now, Side::Right, pl, tol, r1);
-        if (!r1.ok || tags(now, r1.chain) != tags(base, r0.chain) || tags(now, r1.escaped) != tags(base, r0.escaped))
+        if (!r1.ok || tags(now, r1.chain) != tags(base, r0.chain) ||
+            tags(now, r1.escaped) != tags(base, r0.escaped))
           ++really_changed;
         continue;
       }
       finder.find(now, Side::Right, pl, tol, r1);
       ASSERT_TRUE(r1.ok);
-      EXPECT_EQ(tags(now, r1.chain), tags(base, r0.chain)) << "sample " << sample << " trial " << trial;
-      EXPECT_EQ(tags(now, r1.escaped), tags(base, r0.escaped)) << "sample " << sample << " trial " << trial;
+      EXPECT_EQ(tags(now, r1.chain), tags(base, r0.chain))
+          << "sample " << sample << " trial " << trial;
+      EXPECT_EQ(tags(now, r1.escaped), tags(base, r0.escaped))
+          << "sample " << sample << " trial " << trial;
       ++same;
     }
   }

@@ -29,7 +29,7 @@ TEST(InertialNumber, HandWorked)
 {
   // 0.01 /s * 1.75 mm * sqrt(2e8 / 1e5) = 1.75e-5 * 44.7214 = 7.8262e-4
   EXPECT_NEAR(inertial_number(0.01, 1.75e-3, 2e8, 1e5), 7.82624e-4, 1e-9);
-  EXPECT_NEAR(inertial_number(-0.01, 1.75e-3, 2e8, 1e5), 7.82624e-4, 1e-9);   // sign of the rate
+  EXPECT_NEAR(inertial_number(-0.01, 1.75e-3, 2e8, 1e5), 7.82624e-4, 1e-9); // sign of the rate
   EXPECT_EQ(inertial_number(0.01, 1e-3, 2e8, 0.0), std::numeric_limits<double>::infinity());
 }
 
@@ -44,14 +44,16 @@ TEST(OverlapFraction, HandWorked)
   // radii 1 and 0.5 mm, centres 1.4 mm apart: overlap 0.1 mm / 0.5 mm = 0.2
   EXPECT_NEAR(overlap_fraction(1.4e-3, 0.0, 1e-3, 0.5e-3), 0.2, 1e-12);
   // apart by 0.6 * sqrt(2)... along a diagonal: distance 1.6 mm -> gap 0.1 mm -> -0.2
-  EXPECT_NEAR(overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 1e-3, 0.5e-3), -0.2, 1e-12);
+  EXPECT_NEAR(overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 1e-3, 0.5e-3),
+              -0.2, 1e-12);
 }
 
 namespace {
 
 // n atoms in LIGGGHTS' array-of-rows layout
 struct Atoms {
-  explicit Atoms(int n) : xs(n, {0, 0, 0}), vs(n, {0, 0, 0}), fs(n, {0, 0, 0}), r(n, 1e-3), mask(n, 1)
+  explicit Atoms(int n)
+    : xs(n, {0, 0, 0}), vs(n, {0, 0, 0}), fs(n, {0, 0, 0}), r(n, 1e-3), mask(n, 1)
   {
     for (int i = 0; i < n; i++) {
       x.push_back(xs[i].data());
@@ -63,18 +65,21 @@ struct Atoms {
   std::vector<double *> x, v, f;
   std::vector<double> r;
   std::vector<int> mask;
-  AtomScan scan(double dt) const { return scan_atoms(r.size(), x.data(), v.data(), f.data(), r.data(), mask.data(), 1, dt); }
+  AtomScan scan(double dt) const
+  {
+    return scan_atoms(r.size(), x.data(), v.data(), f.data(), r.data(), mask.data(), 1, dt);
+  }
 };
 
-}  // namespace
+} // namespace
 
 TEST(ScanAtoms, FastestDiskOfTheGroup)
 {
   Atoms a(4);
-  a.vs[1] = {1.0, 0.0, 0.0};     // 1 m/s, r 1 mm, dt 1e-5 -> 0.01
-  a.vs[2] = {0.0, -2.0, 0.0};    // 0.02
+  a.vs[1] = {1.0, 0.0, 0.0};  // 1 m/s, r 1 mm, dt 1e-5 -> 0.01
+  a.vs[2] = {0.0, -2.0, 0.0}; // 0.02
   a.r[3] = 0.5e-3;
-  a.vs[3] = {3.0, 0.0, 0.0};     // 0.06, but outside the group
+  a.vs[3] = {3.0, 0.0, 0.0}; // 0.06, but outside the group
   a.mask[3] = 2;
   const AtomScan s = a.scan(1e-5);
   EXPECT_EQ(s.nonfinite, 0);
@@ -91,7 +96,7 @@ TEST(ScanAtoms, NonFiniteValuesAreCountedNotMeasured)
   a.vs[2][1] = std::numeric_limits<double>::infinity();
   a.fs[3][2] = -std::numeric_limits<double>::infinity();
   a.mask[4] = 0;
-  a.vs[4][0] = std::numeric_limits<double>::quiet_NaN();   // outside the group: ignored
+  a.vs[4][0] = std::numeric_limits<double>::quiet_NaN(); // outside the group: ignored
   const AtomScan s = a.scan(1e-5);
   EXPECT_EQ(s.nonfinite, 3);
   EXPECT_EQ(s.first_nonfinite, 1);
