@@ -90,7 +90,8 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
 inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm world,
                               const std::string &prefix, double limit, double &warned_dt)
 {
-  constexpr double poorly_resolved = 0.3, safe = 0.15;
+  constexpr double poorly_resolved = stability::TIME_STEP_POORLY_RESOLVED;
+  constexpr double safe = stability::TIME_STEP_SAFE;
   const double kmax = max_normal_stiffness(lmp, prefix.c_str());
   const double mmin = min_group_mass(lmp, groupbit, world);
   const double dt = lmp->update->dt;

@@ -20,6 +20,26 @@
 // of style_args.h.
 class ScalarInput {
  public:
+  enum class Sign { Any, NonNegative, Positive };
+
+  // the next value of `args`: a number (finite, of the sign asked) or v_name;
+  // a variable's sign is checked when it is evaluated (evaluate_checked)
+  void read(StyleArgs &args, Sign sign, const std::string &usage)
+  {
+    const std::string text = args.value(usage);
+    if (text.compare(0, 2, "v_") == 0) {
+      if (text.size() == 2) args.bad("names no variable", usage);
+      varname_ = text.substr(2);
+      return;
+    }
+    char *end = nullptr;
+    value_ = strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0') args.bad("is neither a number nor v_name", usage);
+    if (!std::isfinite(value_)) args.bad("must be finite", usage);
+    if (sign == Sign::Positive && !(value_ > 0.0)) args.bad("must be a positive number", usage);
+    if (sign == Sign::NonNegative && !(value_ >= 0.0)) args.bad("must be a number >= 0", usage);
+  }
+
   void parse(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name, const char *arg)
   {
     const std::string text = arg;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 
 #include "error.h"
@@ -101,6 +102,22 @@ class StyleArgs {
     if (v < lo || v > hi)
       bad("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi), usage);
     return v;
+  }
+
+  bool yes_no(const std::string &usage) { return choice({"yes", "no"}, usage) == 0; }
+
+  // the index in `words` of the next value: "must be a, b or c" otherwise
+  int choice(std::initializer_list<const char *> words, const std::string &usage)
+  {
+    const std::string v = value(usage);
+    int index = 0;
+    std::string list;
+    for (const char *w : words) {
+      if (v == w) return index;
+      list += std::string(index == 0 ? "" : index + 1 == static_cast<int>(words.size()) ? " or " : ", ") + w;
+      index++;
+    }
+    bad("must be " + list, usage);
   }
 
   // the current value is wrong: "<prefix>keyword 'k' = v: problem; usage"

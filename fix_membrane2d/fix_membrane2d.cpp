@@ -46,9 +46,9 @@ enum { LEFT = 0, RIGHT = 1 };
 constexpr double BAND_WIDENING = 2.5;
 constexpr int MAX_WIDENINGS = 2;
 // stability guards (doc/fix_membrane2d.md, "Stability guards")
-constexpr double TIME_STEP_LIMIT = 0.3;    // x sqrt(m_min/k_n)
+constexpr double TIME_STEP_LIMIT = stability::TIME_STEP_POORLY_RESOLVED;
 constexpr double CHAIN_STEP_LIMIT = 0.025; // chain disk displacement per step / radius
-constexpr double INERTIAL_LIMIT = 1e-3;    // quasi-static bound (GDR MiDi 2004)
+constexpr double INERTIAL_LIMIT = stability::INERTIAL_QUASI_STATIC;
 constexpr bigint INERTIAL_WINDOW = 1000;   // steps over which the platen strain rate is averaged
 
 const char *side_name(int s)

@@ -8,6 +8,19 @@
 
 namespace stability {
 
+// The limits both fix stability/guard and fix membrane2d compare with, defined
+// here only (doc/fix_stability_guard.md, Description).
+// dt / sqrt(m_min/k_n): above it the contacts are poorly resolved (warned)
+constexpr double TIME_STEP_POORLY_RESOLVED = 0.3;
+// dt / sqrt(m_min/k_n) of the published set-up: what the warnings advise
+constexpr double TIME_STEP_SAFE = 0.15;
+// the inertial number below which a test is quasi-static (GDR MiDi 2004)
+constexpr double INERTIAL_QUASI_STATIC = 1e-3;
+// |v| dt / r: a quasi-static test moves disks less than this per step ...
+constexpr double STEP_FRACTION_QUASI_STATIC = 1e-3;
+// ... and a run that has blown up more than this
+constexpr double STEP_FRACTION_BLOWN_UP = 0.05;
+
 // sqrt(m/k): the time scale of a linear contact k on the lightest disk m. Its
 // period is 2 pi sqrt(m_eff/k); velocity Verlet is stable below dt = 2 sqrt(m_eff/k)
 // for one spring, lower with several contacts per disk. The published set-up
