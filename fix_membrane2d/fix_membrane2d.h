@@ -3,8 +3,9 @@
    2D biaxial sample (Cheung & O'Sullivan 2008; Momeni et al. 2024).
    The chain of outermost disks on each side carries the confining
    pressure as one force per disk. See doc/fix_membrane2d.md. Geometry in
-   membrane_chain.h (no LIGGGHTS); this class gathers the side bands,
-   calls it and applies the forces to owned atoms.
+   membrane_chain.h, its state and decisions in membrane_state.h (no
+   LIGGGHTS); the gathers in membrane_gather.h. This class calls them and
+   applies the forces to owned atoms.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -18,13 +19,17 @@ FixStyle(membrane2d,FixMembrane2d)
 #ifndef LMP_FIX_MEMBRANE2D_H
 #define LMP_FIX_MEMBRANE2D_H
 
-#include <cstdint>
 #include <cstdio>
-#include <map>
+#include <string>
 #include <vector>
 
 #include "fix.h"
 #include "membrane_chain.h"
+#include "membrane_gather.h"
+#include "membrane_state.h"
+#include "membrane_atoms.h"
+#include "membrane_output.h"
+#include "membrane_polyline_file.h"
 #include "scalar_input.h"
 
 namespace LAMMPS_NS {
@@ -40,7 +45,14 @@ class FixMembrane2d : public Fix {
   void pre_force(int);
   void post_force(int);
   void post_run();
-  double compute_vector(int);
+  double compute_vector(int n) { return vector_values[n]; }
+  // restart (membrane_record.h): everything a run continued from the file
+  // needs to give the output of one straight through, with the definition it
+  // was written with. The disks in the file carry their own types:
+  // write_restart() gives them back before LIGGGHTS packs the atoms and
+  // pack_restart() switches each packed one again, so a restart read by
+  // another definition, another fix ID or no membrane at all holds the true
+  // sample.
   void write_restart(FILE *);
   void restart(char *);
   int pack_restart(int, double *);
@@ -50,140 +62,51 @@ class FixMembrane2d : public Fix {
   double memory_usage();
   // LIGGGHTS sizes its per-type-pair contact tables by the types atoms and fixes
   // report: the frictionless type may not be on any atom before the first run.
-  int min_type() { return membrane_type; }
-  int max_type() { return membrane_type; }
+  int min_type() { return definition.frictionless_type; }
+  int max_type() { return definition.frictionless_type; }
 
-  // global vector layout (1-based in input scripts: f_ID[k])
-  enum VectorIndex {
-    AREA = 0,
-    MEAN_WIDTH,
-    MID_WIDTH,
-    CHAIN_LEFT,
-    CHAIN_RIGHT,
-    ESCAPED,
-    FX_LEFT,
-    FY_LEFT,
-    FX_RIGHT,
-    FY_RIGHT,
-    REDETECTIONS,
-    FAILURES,
-    PRESSURE,
-    WIDENINGS,
-    CHAIN_STEP,
-    INERTIAL,
-    CHANGES,
-    VECTOR_SIZE
-  };
-  enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };
+  // the global vector: membrane::Output (membrane_output.h); per-atom flags:
+  // MembraneAtoms::Flag (membrane_atoms.h)
 
  private:
-  struct SideState {
-    membrane::Side side;
-    bool active = false;
-    std::vector<long> chain_tags; // bottom -> top, kept between detections
-    std::vector<long> escaped_tags;
-    std::vector<long> forgotten_tags, forgotten_escaped; // of the last run, when not kept
-    std::vector<double> escaped_radius;
-    membrane::BandSlices slices;
-    std::vector<membrane::Disk> band;        // gathered at the last detection
-    std::vector<int> band_type;              // type of each band disk
-    std::vector<membrane::Disk> chain_disks; // current positions, chain order
-    std::vector<int> chain_types;            // current types, chain order
-    membrane::DetectionWatch watch;          // every auto: what the last search depended on
-    std::vector<membrane::Disk> watch_band;  // the band it searched, as it was then
-    std::vector<membrane::Disk> now;         // the same, watched disks at their current positions
-    membrane::Polyline polyline;
-    std::vector<Eigen::Vector2d> forces;
-    Eigen::Vector2d total{0.0, 0.0};
-    bool warned = false;
-  };
-
   ScalarInput pressure_in, ylo_in, yhi_in; // numbers or v_name
-  double thickness;
-  double band_width;   // <= 0: 4 x D50 of the group, set in init()
-  double search_width; // band width of the next search: band_width, or wider once widened
-  double tolerance;    // < 0: 0.02 x D50
-  double band_given, tolerance_given; // as given (-1: default), compared on restart
-  double d50;
-  double density;    // group mass / group disk area [kg/m^2 per unit thickness]
-  int detect_every;  // 0: auto (when the chain can have changed)
-  int membrane_type; // 0: chain disks keep their friction
+  membrane::Definition definition;         // as given (band/tolerance -1: default)
+  bool detect_auto() const { return definition.detect_every == 0; }
   bigint polyline_every;
-  char *polyline_file;
-  FILE *polyline_fp;
-
-  SideState sides[2]; // LEFT, RIGHT
+  MembranePolylineFile polyline;
+  MembraneGather gather;
+  MembraneAtoms atoms; // forces, flags and types of the chain disks
   membrane::ChainFinder finder;
-  membrane::ChainResult result;
-  std::vector<int> result_buf;       // a side's chain search, broadcast by the rank that ran it
-  std::map<long, int> observed_type; // chain tag -> its own (not frictionless) type
-  // Between runs (and in restart files) every disk carries its own type: the
-  // chain disks take the frictionless type while the fix runs.
-  bool types_applied = false;
-  std::vector<char> restored_for_restart; // local atoms write_restart gave their own type back
-  // The chain state is kept from one run to the next (and through restart
-  // files) when the group's disks are as they were: same tags, types, radii
-  // and positions, checked by a checksum at the start of the run.
-  bool state_kept = false;
-  std::uint64_t state_checksum = 0;
-  std::vector<int> slice_of_atom; // band slice of each local disk
-  std::vector<int> chain_index;   // 0..n-1: chain_disks are already in chain order
 
-  // disks whose positions are gathered every step: chain disks and watched disks
-  struct WatchEntry {
-    long tag = 0;
-    int chain_index[2] = {-1, -1}; // position in sides[k].chain_disks
-    int band_index[2] = {-1, -1};  // index in sides[k].now
-  };
-  std::vector<WatchEntry> watch_list; // sorted by tag
-  double band_displacement = 0.0;     // largest band-disk displacement since the detection
-  double ylo_detected = 0.0, yhi_detected = 0.0;
+  // what a detection found, what it depended on, the counters: all a restart carries
+  membrane::SideChain chains[2]; // LEFT, RIGHT
+  membrane::RunState run;
+  double d50;
+  double density; // group mass / group disk area [kg/m^2 per unit thickness]
 
+  // what each step works with
+  MembraneSideData sides[2];
+  membrane::SideLoad loads[2];
+  std::vector<membrane::WatchEntry> watch_list; // the disks gathered at every step
+  MembraneGather::Watched watched;              // and what they did this step
   double pressure, ylo, yhi;
-  bool force_detection;
-  double vector_values[VECTOR_SIZE];
-  bigint redetections, failures, widenings;
-  bigint changes; // detections that changed a chain or its escapees (per side)
+  double vector_values[membrane::OUTPUT_SIZE];
+  double warned_dt = 0.0; // the time step last warned about
 
-  // stability guards
-  struct ChainStep {
-    double fraction; // largest |v| dt / r of a chain disk this step
-    long tag;
-  } chain_step;
-  double inertial;       // last inertial number (0 before the first window)
-  bigint inertial_step0; // start of the current strain-rate window (-1: none)
-  double inertial_height0;
-  bool warned_chain_step, warned_inertial;
-  double warned_dt = 0.0;     // the time step last warned about
-  bool inertial_above_before; // the previous window was above the limit
+  // The chain state is kept from one run to the next (and through restart
+  // files) when the group's disks are as they were (a checksum of tags,
+  // types, radii and positions at the start of the run).
+  bool state_kept = false;
 
-  int nmax_flag;
-  std::vector<double> sendbuf, recvbuf;
-  std::vector<int> recvcounts, displs;
+  int flag_capacity; // rows of vector_atom
+  int sides_mask() const { return (chains[0].active ? 1 : 0) + (chains[1].active ? 2 : 0); }
 
   void evaluate_platens();
-  void check_other_membranes();
-  void check_lengths();
-  std::uint64_t group_checksum();
   void forget_state();
-  void apply_types();
-  void restore_types();
-  void check_platens();
-  void check_chain_step();
-  void check_inertial_number();
-  void gather_bands(double width);
-  void accept_chain(int side);
-  void chain_lost(int side);
   void detect_chains();
-  void find_chain(int side);
-  void switch_types(const std::vector<long> &old_tags, const std::vector<long> &new_tags);
-  void build_watch_list();
+  void chain_lost(int side, const std::string &why);
   void gather_watched();
-  bool chains_may_have_changed();
-  void apply_forces();
-  void update_flags();
-  void update_outputs();
-  void write_polylines();
+  void check_stability();
 };
 
 } // namespace LAMMPS_NS

@@ -2,6 +2,108 @@
 
 namespace membrane {
 
+namespace {
+
+void put_definition(RestartRecordWriter &out, const Definition &d)
+{
+  out.put(d.sides_mask);
+  out.put(d.frictionless_type);
+  out.put(d.detect_every);
+  out.put(d.band_given);
+  out.put(d.tolerance_given);
+  out.put(d.thickness);
+}
+
+Definition get_definition(RestartRecordReader &in)
+{
+  Definition d;
+  d.sides_mask = static_cast<int>(in.get());
+  d.frictionless_type = static_cast<int>(in.get());
+  d.detect_every = static_cast<int>(in.get());
+  d.band_given = in.get();
+  d.tolerance_given = in.get();
+  d.thickness = in.get();
+  return d;
+}
+
+double flag(bool b)
+{
+  return b ? 1.0 : 0.0;
+}
+
+} // namespace
+
+std::vector<double> write_record(const Definition &def, const RunState &run,
+                                 const SideChain (&sides)[2])
+{
+  RestartRecordWriter out = record_writer();
+  put_definition(out, def);
+  out.put(static_cast<double>(run.checksum >> 32));
+  out.put(static_cast<double>(run.checksum & 0xffffffffu));
+  out.put(run.band_width);
+  out.put(run.search_width);
+  out.put(run.tolerance);
+  out.put(flag(run.force_detection));
+  out.put(run.ylo_detected);
+  out.put(run.yhi_detected);
+  for (const SideChain &s : sides) {
+    put_tags(out, s.chain_tags);
+    put_tags(out, s.escaped_tags);
+    for (double r : s.escaped_radius) out.put(r);
+    put_watch(out, s.watch);
+    put_disks(out, s.watch_band);
+    out.put(flag(s.warned_lost));
+  }
+  const Counters &c = run.counters;
+  for (long long n : {c.detections, c.failures, c.widenings, c.changes})
+    out.put(static_cast<double>(n));
+  out.put(run.inertial.value);
+  out.put(static_cast<double>(run.inertial.first_step));
+  out.put(run.inertial.first_height);
+  out.put(flag(run.inertial.was_above));
+  out.put(flag(run.warned_inertial));
+  out.put(flag(run.warned_chain_step));
+  return out.finish();
+}
+
+std::string read_record(const double *data, std::size_t n, const Definition &def,
+                        bool &same_definition, RunState &run, SideChain (&sides)[2])
+{
+  RestartRecordReader in = record_reader(data, n);
+  same_definition = in.ok() && get_definition(in) == def;
+  if (!in.ok() || !same_definition) return in.error();
+  const std::uint64_t hi = static_cast<std::uint64_t>(in.get()),
+                      lo = static_cast<std::uint64_t>(in.get());
+  run.checksum = (hi << 32) | lo;
+  run.band_width = in.get();
+  run.search_width = in.get();
+  run.tolerance = in.get();
+  run.force_detection = in.get() != 0.0;
+  run.ylo_detected = in.get();
+  run.yhi_detected = in.get();
+  for (SideChain &s : sides) {
+    get_tags(in, s.chain_tags);
+    get_tags(in, s.escaped_tags);
+    s.escaped_radius.resize(s.escaped_tags.size());
+    for (double &r : s.escaped_radius) r = in.get();
+    get_watch(in, s.watch);
+    get_disks(in, s.watch_band);
+    s.now = s.watch_band;
+    s.warned_lost = in.get() != 0.0;
+  }
+  Counters &c = run.counters;
+  for (long long *k : {&c.detections, &c.failures, &c.widenings, &c.changes})
+    *k = static_cast<long long>(in.get());
+  run.inertial.value = in.get();
+  run.inertial.first_step = static_cast<long long>(in.get());
+  run.inertial.first_height = in.get();
+  run.inertial.was_above = in.get() != 0.0;
+  run.warned_inertial = in.get() != 0.0;
+  run.warned_chain_step = in.get() != 0.0;
+  in.finished();
+  return in.error();
+}
+
 void put_tags(RestartRecordWriter &out, const std::vector<long> &tags)
 {
   out.put(static_cast<double>(tags.size()));

@@ -1,13 +1,16 @@
-#pragma once
-// The restart record of fix membrane2d (common/restart_record.h) and the
-// fields of the membrane state it holds: tag lists, disks, the watch of the
-// last detection. No LIGGGHTS.
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE_RECORD_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE_RECORD_H
+
+// The restart record of fix membrane2d (common/restart_record.h): its
+// definition, then the state of membrane_state.h. No LIGGGHTS.
 
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "membrane_chain.h"
+#include "membrane_state.h"
 #include "restart_record.h"
 
 namespace membrane {
@@ -24,6 +27,16 @@ inline RestartRecordReader record_reader(const double *data, std::size_t n)
   return RestartRecordReader(data, n, RECORD_MAGIC, RECORD_VERSION);
 }
 
+// The whole record.
+std::vector<double> write_record(const Definition &def, const RunState &run,
+                                 const SideChain (&sides)[2]);
+// Reads a record of at most `n` doubles: "" when read, else why it cannot be.
+// `same_definition` is false, and nothing beyond the definition is read,
+// when the record was written by another definition than `def`.
+std::string read_record(const double *data, std::size_t n, const Definition &def,
+                        bool &same_definition, RunState &run, SideChain (&sides)[2]);
+
+// Its fields.
 void put_tags(RestartRecordWriter &out, const std::vector<long> &tags);
 void put_disks(RestartRecordWriter &out, const std::vector<Disk> &disks);
 void put_watch(RestartRecordWriter &out, const DetectionWatch &w);
@@ -54,3 +67,5 @@ inline std::uint64_t disk_checksum(long tag, int type, double x, double y, doubl
 }
 
 } // namespace membrane
+
+#endif

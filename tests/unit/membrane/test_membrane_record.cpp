@@ -113,3 +113,95 @@ TEST(MembraneRecord, LengthBeyondTheBufferIsRefused)
   RestartRecordReader in = record_reader(rec.data(), rec.size());
   EXPECT_FALSE(in.ok());
 }
+
+namespace {
+
+void sample_state(RunState &run, SideChain (&sides)[2])
+{
+  run.checksum = 0x0123456789abcdefull;
+  run.band_width = 0.008;
+  run.search_width = 0.02;
+  run.tolerance = 4e-5;
+  run.force_detection = false;
+  run.ylo_detected = -0.1;
+  run.yhi_detected = 0.1;
+  run.counters = {12, 1, 2, 5};
+  run.inertial.value = 3e-4;
+  run.inertial.first_step = 4000;
+  run.inertial.first_height = 0.2;
+  run.inertial.was_above = true;
+  run.warned_inertial = true;
+  sides[LEFT].chain_tags = {3, 1, 4};
+  sides[LEFT].escaped_tags = {15};
+  sides[LEFT].escaped_radius = {0.001};
+  sides[RIGHT].chain_tags = {9, 2};
+  sides[RIGHT].watch = sample_watch();
+  sides[RIGHT].watch_band = {{9, 0.1, 0.0, 0.001}, {2, 0.1, 0.002, 0.001}};
+  sides[RIGHT].warned_lost = true;
+}
+
+} // namespace
+
+TEST(MembraneRecord, WholeStateRoundTrips)
+{
+  Definition def;
+  def.frictionless_type = 2;
+  RunState run;
+  SideChain sides[2];
+  sample_state(run, sides);
+  const std::vector<double> rec = write_record(def, run, sides);
+  RunState back;
+  SideChain back_sides[2];
+  bool same = false;
+  EXPECT_EQ(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+  EXPECT_TRUE(same);
+  EXPECT_EQ(back.checksum, run.checksum);
+  EXPECT_EQ(back.search_width, 0.02);
+  EXPECT_FALSE(back.force_detection);
+  EXPECT_EQ(back.yhi_detected, 0.1);
+  EXPECT_EQ(back.counters.detections, 12);
+  EXPECT_EQ(back.counters.changes, 5);
+  EXPECT_EQ(back.inertial.first_step, 4000);
+  EXPECT_TRUE(back.inertial.was_above);
+  EXPECT_TRUE(back.warned_inertial);
+  EXPECT_FALSE(back.warned_chain_step);
+  EXPECT_EQ(back_sides[LEFT].chain_tags, sides[LEFT].chain_tags);
+  EXPECT_EQ(back_sides[LEFT].escaped_radius, sides[LEFT].escaped_radius);
+  EXPECT_EQ(back_sides[RIGHT].watch_band.size(), 2u);
+  EXPECT_EQ(back_sides[RIGHT].now.size(), 2u); // the watched disks start where they were
+  EXPECT_TRUE(back_sides[RIGHT].warned_lost);
+  EXPECT_FALSE(back_sides[LEFT].warned_lost);
+}
+
+TEST(MembraneRecord, AnotherDefinitionLeavesTheStateAlone)
+{
+  Definition def;
+  RunState run;
+  SideChain sides[2];
+  sample_state(run, sides);
+  const std::vector<double> rec = write_record(def, run, sides);
+  Definition other = def;
+  other.detect_every = 10;
+  RunState back;
+  SideChain back_sides[2];
+  bool same = true;
+  EXPECT_EQ(read_record(rec.data(), rec.size(), other, same, back, back_sides), "");
+  EXPECT_FALSE(same);
+  EXPECT_EQ(back.counters.detections, 0);
+  EXPECT_TRUE(back_sides[LEFT].chain_tags.empty());
+}
+
+TEST(MembraneRecord, CutWholeRecordIsRefused)
+{
+  Definition def;
+  RunState run;
+  SideChain sides[2];
+  sample_state(run, sides);
+  std::vector<double> rec = write_record(def, run, sides);
+  rec[2] -= 1.0; // one field less than written
+  RunState back;
+  SideChain back_sides[2];
+  bool same = false;
+  EXPECT_NE(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+  EXPECT_TRUE(same); // the definition was read: the error says the rest is corrupt
+}

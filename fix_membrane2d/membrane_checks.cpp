@@ -1,0 +1,121 @@
+#include "membrane_checks.h"
+
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_property_global.h"
+#include "modify.h"
+#include "update.h"
+
+#include "membrane_output.h"
+#include "style_args.h"
+
+using namespace LAMMPS_NS;
+
+void check_atom_setup(LAMMPS *lmp, const char *prefix)
+{
+  auto stop = [&](const char *text) {
+    lmp->error->all(FLERR, (std::string(prefix) + text).c_str());
+  };
+  if (lmp->domain->dimension != 2) stop("requires dimension 2");
+  if (!lmp->atom->radius_flag) stop("requires atom style sphere (granular)");
+  if (lmp->atom->tag_enable == 0 || lmp->atom->map_style == 0)
+    stop("requires atom IDs and an atom map (atom_modify map array)");
+  if (lmp->domain->xperiodic)
+    stop("the box is periodic in x: the sample would wrap across the boundary and its outermost "
+         "disks have no left and right; use boundary f f p (or m m p)");
+}
+
+void check_platens_order(LAMMPS *lmp, const char *prefix, const ScalarInput &ylo_in, double ylo,
+                         double yhi)
+{
+  if (!(ylo < yhi))
+    lmp->error->all(
+        FLERR, keyword_message(prefix, "ylo", ylo_in.text(),
+                               "is " + number_text(ylo) + ", not below yhi = " + number_text(yhi) +
+                                   " at step " + std::to_string(lmp->update->ntimestep) +
+                                   "; ylo is the bottom platen surface, yhi the top one")
+                   .c_str());
+}
+
+void check_frictionless_type(LAMMPS *lmp, const char *prefix, int type, const char *style)
+{
+  if (type <= 0) {
+    if (lmp->comm->me == 0)
+      lmp->error->warning(FLERR, (std::string(prefix) +
+                                  "no 'frictionless' type given: chain disks keep their friction")
+                                     .c_str());
+    return;
+  }
+  const int ntypes = lmp->atom->ntypes;
+  FixPropertyGlobal *mu = static_cast<FixPropertyGlobal *>(
+      lmp->modify->find_fix_property("coefficientFriction", "property/global", "peratomtypepair",
+                                     ntypes, ntypes, const_cast<char *>(style)));
+  for (int j = 1; j <= ntypes; j++) {
+    const double value = mu->compute_array(type - 1, j - 1);
+    if (value != 0.0)
+      lmp->error->all(FLERR,
+                      (std::string(prefix) + "coefficientFriction of the frictionless type " +
+                       std::to_string(type) + " with type " + std::to_string(j) + " is " +
+                       std::to_string(value) + ", it must be 0")
+                          .c_str());
+  }
+}
+
+// two membranes on one disk would apply the pressure twice and fight over its type
+void check_other_membranes(LAMMPS *lmp, const char *prefix, Fix *self, MembraneGather &gather)
+{
+  Modify *modify = lmp->modify;
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (other == self || strcmp(other->style, self->style) != 0) continue;
+    const bigint total = gather.shared_disks(other->groupbit);
+    const bool first = f < modify->find_fix(self->id);
+    if (total > 0)
+      lmp->error->all(FLERR, (std::string(prefix) + "fixes '" + (first ? other->id : self->id) +
+                              "' and '" + (first ? self->id : other->id) +
+                              "' are both membrane2d on " + std::to_string(total) +
+                              " disks: one membrane per sample (unfix one; "
+                              "two samples need groups with no disk in common)")
+                                 .c_str());
+  }
+}
+
+void check_lengths(LAMMPS *lmp, const char *prefix, double band, double tolerance, double d50)
+{
+  const std::string band_text = membrane::band_problem(band, d50);
+  if (!band_text.empty())
+    lmp->error->all(FLERR, keyword_message(prefix, "band", number_text(band), band_text).c_str());
+  const std::string tolerance_text = membrane::tolerance_problem(tolerance, d50);
+  if (!tolerance_text.empty())
+    lmp->error->all(
+        FLERR,
+        keyword_message(prefix, "tolerance", number_text(tolerance), tolerance_text).c_str());
+}
+
+void check_platens_enclose(LAMMPS *lmp, const char *prefix, MembraneGather &gather,
+                           const ScalarInput &ylo_in, double ylo, const ScalarInput &yhi_in,
+                           double yhi)
+{
+  double lo, hi;
+  gather.group_y_range(lo, hi);
+  const std::string enclose = "; the platens must enclose the sample";
+  if (lo < ylo)
+    lmp->error->all(FLERR, keyword_message(prefix, "ylo", ylo_in.text(),
+                                           "is " + number_text(ylo) +
+                                               ", above the lowest disk centre of the group (y = " +
+                                               number_text(lo) + ")" + enclose)
+                               .c_str());
+  if (hi > yhi)
+    lmp->error->all(FLERR,
+                    keyword_message(prefix, "yhi", yhi_in.text(),
+                                    "is " + number_text(yhi) +
+                                        ", below the highest disk centre of the group (y = " +
+                                        number_text(hi) + ")" + enclose)
+                        .c_str());
+}

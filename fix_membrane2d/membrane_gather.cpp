@@ -1,0 +1,223 @@
+#include "membrane_gather.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "update.h"
+
+#include "allgather.h"
+#include "membrane_output.h"
+#include "membrane_record.h"
+#include "stability_checks.h"
+
+using namespace LAMMPS_NS;
+using membrane::Disk;
+using membrane::LEFT;
+using membrane::RIGHT;
+using membrane::Side;
+
+namespace {
+enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
+enum WatchField { W_TAG, W_X, W_Y, W_R, W_STEP, W_TYPE, WATCH_FIELDS };
+} // namespace
+
+void MembraneGather::bands(const membrane::Platens &platens, double width, const bool active[2],
+                           MembraneSideData (&sides)[2])
+{
+  // One pass over the local disks for both sides: the slices are the same.
+  for (int k = LEFT; k <= RIGHT; k++)
+    if (active[k]) sides[k].slices.reset(k == LEFT ? Side::Left : Side::Right, platens, width);
+  const membrane::BandSlices &slicing = sides[active[LEFT] ? LEFT : RIGHT].slices;
+  double **x = atom->x;
+  double *radius = atom->radius;
+  const int nlocal = atom->nlocal;
+  slice_of_atom_.resize(nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit_)) continue;
+    const int slice = slicing.slice_of(x[i][1]);
+    slice_of_atom_[i] = slice;
+    for (int k = LEFT; k <= RIGHT; k++)
+      if (active[k]) sides[k].slices.add_in_slice(slice, x[i][0], radius[i]);
+  }
+  for (int k = LEFT; k <= RIGHT; k++) {
+    if (!active[k]) continue;
+    std::vector<double> &extent = sides[k].slices.extents();
+    MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
+                  k == RIGHT ? MPI_MAX : MPI_MIN, world);
+    sides[k].slices.finish();
+  }
+
+  send_.clear();
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit_)) continue;
+    for (int k = LEFT; k <= RIGHT; k++) {
+      if (!active[k] ||
+          !sides[k].slices.contains_in_slice(slice_of_atom_[i], x[i][0], radius[i], width))
+        continue;
+      const double rec[BAND_FIELDS] = {static_cast<double>(k),
+                                       static_cast<double>(atom->tag[i]),
+                                       x[i][0],
+                                       x[i][1],
+                                       radius[i],
+                                       static_cast<double>(atom->type[i])};
+      send_.insert(send_.end(), rec, rec + BAND_FIELDS);
+    }
+  }
+  allgather_doubles(world, send_, recv_, counts_, displs_);
+
+  // No sorting: the chain search depends on the set of disks, not on their
+  // order (ties are broken by tag), so any rank count gives the same chain.
+  for (MembraneSideData &s : sides) {
+    s.band.clear();
+    s.band_type.clear();
+  }
+  for (std::size_t k = 0; k < recv_.size(); k += BAND_FIELDS) {
+    const double *rec = recv_.data() + k;
+    MembraneSideData &s = sides[static_cast<int>(rec[B_SIDE])];
+    s.band.push_back(Disk{static_cast<long>(rec[B_TAG]), rec[B_X], rec[B_Y], rec[B_R]});
+    s.band_type.push_back(static_cast<int>(rec[B_TYPE]));
+  }
+  for (int k = LEFT; k <= RIGHT; k++)
+    if (active[k] && sides[k].band.empty())
+      error->all(FLERR, (prefix_ + "no atoms in the " + membrane::side_name(k) + " band").c_str());
+}
+
+void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideData (&sides)[2],
+                            const bool pending[2], const membrane::Platens &platens,
+                            double tolerance, membrane::ChainResult (&results)[2])
+{
+  auto owner = [&](int k) { return k == RIGHT && comm->nprocs > 1 ? 1 : 0; };
+  const Side side_of[2] = {Side::Left, Side::Right};
+  for (int k = LEFT; k <= RIGHT; k++)
+    if (pending[k] && comm->me == owner(k))
+      finder.find(sides[k].band, side_of[k], platens, tolerance, results[k]);
+  if (comm->nprocs == 1) return;
+  // Every rank holds the same band in the same order (allgather): indices
+  // into it identify the disks.
+  for (int k = LEFT; k <= RIGHT; k++) {
+    if (!pending[k]) continue;
+    if (comm->me == owner(k)) membrane::pack_result(results[k], result_buf_);
+    int size = static_cast<int>(result_buf_.size());
+    MPI_Bcast(&size, 1, MPI_INT, owner(k), world);
+    result_buf_.resize(size);
+    MPI_Bcast(result_buf_.data(), size, MPI_INT, owner(k), world);
+    if (comm->me != owner(k) &&
+        !membrane::unpack_result(result_buf_.data(), result_buf_.size(), results[k]))
+      error->one(FLERR, (prefix_ + "internal error: a broadcast chain search is corrupt").c_str());
+  }
+}
+
+MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::WatchEntry> &list,
+                                                membrane::SideChain (&chains)[2],
+                                                bool watch_relations, MembraneSideData (&sides)[2])
+{
+  double local_displacement = 0.0;
+  if (watch_relations)
+    for (const membrane::SideChain &s : chains) {
+      if (!s.active || s.watch.always) continue;
+      for (const Disk &d : s.watch_band) {
+        const int i = atom->map(static_cast<int>(d.tag));
+        if (i < 0 || i >= atom->nlocal) continue;
+        const double dx = atom->x[i][0] - d.x, dy = atom->x[i][1] - d.y;
+        local_displacement = std::max(local_displacement, dx * dx + dy * dy);
+      }
+    }
+  local_displacement = std::sqrt(local_displacement);
+
+  // each rank sends its owned watched disks and its own maximum in one allgather
+  send_.clear();
+  for (const membrane::WatchEntry &e : list) {
+    const int i = atom->map(static_cast<int>(e.tag));
+    if (i < 0 || i >= atom->nlocal) continue;
+    const double *v = atom->v[i];
+    const double rec[WATCH_FIELDS] = {
+        static_cast<double>(e.tag),
+        atom->x[i][0],
+        atom->x[i][1],
+        atom->radius[i],
+        stability::step_fraction(v[0], v[1], update->dt, atom->radius[i]),
+        static_cast<double>(atom->type[i])};
+    send_.insert(send_.end(), rec, rec + WATCH_FIELDS);
+  }
+  const double trailer[WATCH_FIELDS] = {-1.0, local_displacement, 0.0, 0.0, 0.0, 0.0};
+  send_.insert(send_.end(), trailer, trailer + WATCH_FIELDS);
+  allgather_doubles(world, send_, recv_, counts_, displs_);
+
+  const std::string step = std::to_string(update->ntimestep);
+  if (recv_.size() != WATCH_FIELDS * (list.size() + comm->nprocs))
+    error->all(FLERR, (prefix_ + "a chain, escaped or band disk was lost at step " + step +
+                       " (it left the box; 'thermo_modify lost ignore' hides this): the membrane "
+                       "cannot hold a sample whose outer disks fly off; check the time step, the "
+                       "pressure and the platens")
+                          .c_str());
+  for (double v : recv_)
+    if (!std::isfinite(v))
+      error->all(FLERR, (prefix_ + "a chain particle position is not finite at step " + step +
+                         ": the run has gone unstable; reduce the time step or the loading rate")
+                            .c_str());
+  for (int k = LEFT; k <= RIGHT; k++) {
+    sides[k].chain_disks.resize(chains[k].active ? chains[k].chain_tags.size() : 0);
+    sides[k].chain_types.resize(sides[k].chain_disks.size());
+  }
+  Watched out;
+  for (std::size_t k = 0; k < recv_.size(); k += WATCH_FIELDS) {
+    const double *rec = recv_.data() + k;
+    if (rec[W_TAG] < 0.0) {
+      out.band_displacement = std::max(out.band_displacement, rec[W_X]);
+      continue;
+    }
+    const long tag = static_cast<long>(rec[W_TAG]);
+    const Disk d{tag, rec[W_X], rec[W_Y], rec[W_R]};
+    const membrane::WatchEntry &e = *membrane::find_watched(list, tag);
+    for (int side = LEFT; side <= RIGHT; side++) {
+      if (e.chain_position[side] >= 0) {
+        sides[side].chain_disks[e.chain_position[side]] = d;
+        sides[side].chain_types[e.chain_position[side]] = static_cast<int>(rec[W_TYPE]);
+        if (rec[W_STEP] > out.chain_step) {
+          out.chain_step = rec[W_STEP];
+          out.chain_step_tag = tag;
+        }
+      }
+      if (e.band_index[side] >= 0) chains[side].now[e.band_index[side]] = d;
+    }
+  }
+  return out;
+}
+
+std::uint64_t MembraneGather::group_checksum()
+{
+  std::uint64_t sum = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit_)
+      sum += membrane::disk_checksum(atom->tag[i], atom->type[i], atom->x[i][0], atom->x[i][1],
+                                     atom->radius[i]);
+  std::uint64_t total = 0;
+  MPI_Allreduce(&sum, &total, 1, MPI_UINT64_T, MPI_SUM, world);
+  return total;
+}
+
+void MembraneGather::group_y_range(double &lo, double &hi)
+{
+  double local[2] = {1e300, -1e300};
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit_)) continue;
+    local[0] = std::min(local[0], atom->x[i][1]);
+    local[1] = std::max(local[1], atom->x[i][1]);
+  }
+  MPI_Allreduce(&local[0], &lo, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&local[1], &hi, 1, MPI_DOUBLE, MPI_MAX, world);
+}
+
+bigint MembraneGather::shared_disks(int otherbit)
+{
+  bigint shared = 0, total = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit_) && (atom->mask[i] & otherbit)) shared++;
+  MPI_Allreduce(&shared, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  return total;
+}

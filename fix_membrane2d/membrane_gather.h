@@ -1,0 +1,68 @@
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE_GATHER_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE_GATHER_H
+
+// The MPI side of fix membrane2d: what every rank must hold identically (the
+// side bands, the watched disks, the search results) so that the chain never
+// depends on the number of ranks, and the group-wide reductions it checks.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lmptype.h"
+#include "pointers.h"
+
+#include "membrane_chain.h"
+#include "membrane_state.h"
+
+// What one side works with between its detections, gathered on every rank.
+struct MembraneSideData {
+  membrane::BandSlices slices;
+  std::vector<membrane::Disk> band; // at the last detection, in no particular order
+  std::vector<int> band_type;
+  std::vector<membrane::Disk> chain_disks; // now, chain order
+  std::vector<int> chain_types;
+};
+
+class MembraneGather : protected LAMMPS_NS::Pointers {
+ public:
+  MembraneGather(LAMMPS_NS::LAMMPS *lammps, std::string prefix, int groupbit)
+    : Pointers(lammps), prefix_(std::move(prefix)), groupbit_(groupbit)
+  {
+  }
+
+  // The disks of the group within `width` of the outer edge of each active side.
+  void bands(const membrane::Platens &platens, double width, const bool active[2],
+             MembraneSideData (&sides)[2]);
+
+  // The searches of the `pending` sides, each run by its own rank (left on
+  // rank 0, right on rank 1) at the same time; every rank gets both results.
+  void search(membrane::ChainFinder &finder, const MembraneSideData (&sides)[2],
+              const bool pending[2], const membrane::Platens &platens, double tolerance,
+              membrane::ChainResult (&results)[2]);
+
+  struct Watched {
+    double band_displacement = 0.0; // largest of a band disk since the detection (every auto)
+    double chain_step = 0.0;        // largest |v| dt / r of a chain disk this step
+    long chain_step_tag = -1;
+  };
+  // Positions, types and step fractions of the disks of `list` now; stops the
+  // run when one of them is lost or not finite.
+  Watched watched(const std::vector<membrane::WatchEntry> &list, membrane::SideChain (&chains)[2],
+                  bool watch_relations, MembraneSideData (&sides)[2]);
+
+  // Order-free hash of the group's disks (tag, type, position, radius).
+  std::uint64_t group_checksum();
+  // Lowest and highest disk centre of the group.
+  void group_y_range(double &lo, double &hi);
+  // Disks of the group that are also in the group of `otherbit`.
+  LAMMPS_NS::bigint shared_disks(int otherbit);
+
+ private:
+  std::string prefix_;
+  int groupbit_;
+  std::vector<double> send_, recv_;
+  std::vector<int> counts_, displs_, slice_of_atom_, result_buf_;
+};
+
+#endif

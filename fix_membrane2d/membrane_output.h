@@ -1,0 +1,74 @@
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE_OUTPUT_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE_OUTPUT_H
+
+// What fix membrane2d writes besides its vector: the text of its checks and
+// warnings (numbers in, words out) and the polyline file. No LIGGGHTS.
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "membrane_chain.h"
+#include "membrane_state.h"
+
+namespace membrane {
+
+// The global vector of fix membrane2d (1-based in input scripts: f_ID[k]).
+enum Output {
+  AREA = 0,
+  MEAN_WIDTH,
+  MID_WIDTH,
+  CHAIN_LEFT,
+  CHAIN_RIGHT,
+  ESCAPED,
+  FX_LEFT,
+  FY_LEFT,
+  FX_RIGHT,
+  FY_RIGHT,
+  DETECTIONS,
+  FAILURES,
+  PRESSURE,
+  WIDENINGS,
+  CHAIN_STEP,
+  INERTIAL,
+  CHANGES,
+  OUTPUT_SIZE
+};
+// Fills `v` (OUTPUT_SIZE values); area and widths need both sides.
+void output_vector(const SideChain (&chains)[2], const SideLoad (&loads)[2], const RunState &run,
+                   Platens platens, double pressure, double chain_step, double *v);
+
+inline const char *side_name(int k)
+{
+  return k == LEFT ? "left" : "right";
+}
+
+// Why the band width or the gap tolerance (lengths) cannot be used with this
+// D50; "" when they can.
+std::string band_problem(double band, double d50);
+std::string tolerance_problem(double tolerance, double d50);
+
+// The warnings of the stability guards (warned once per run).
+std::string chain_step_warning(long tag, double fraction, long long step);
+std::string inertial_warning(const InertialWindow &w, double limit, long long step, double d50,
+                             double density, double pressure);
+
+// The errors and warnings of a chain search that failed on one side
+// (`where`: "left side at step N", `why`: the search's reason).
+std::string no_chain_error(const std::string &where, const std::string &why);
+std::string chain_lost_warning(const std::string &where, const std::string &why);
+
+// Why fix `id` cannot use the state of a restart file: its record cannot be
+// read (`reason`; `other_format`: written by another version), or the fix is
+// defined otherwise than in the file.
+std::string restart_unreadable(const std::string &id, const std::string &reason, bool other_format);
+std::string restart_other_definition(const std::string &id);
+
+// One side's part of a polyline-file frame (doc/fix_membrane2d.md, "polyline").
+void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyline,
+                         const std::vector<Disk> &chain,
+                         const std::vector<Eigen::Vector2d> &forces);
+
+} // namespace membrane
+
+#endif

@@ -1,0 +1,83 @@
+// What fix membrane2d writes (membrane_output.h): its vector from the state,
+// the limits of its lengths and the wording of its warnings.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "membrane_output.h"
+
+using namespace membrane;
+
+TEST(MembraneOutput, VectorOfARectangularSample)
+{
+  // straight chains at x = -1 and x = 2 between platens y = 0 and 3: area 9
+  SideChain chains[2];
+  chains[LEFT].active = chains[RIGHT].active = true;
+  chains[LEFT].chain_tags = {1, 2};
+  chains[RIGHT].chain_tags = {3, 4, 5};
+  chains[RIGHT].escaped_tags = {6};
+  SideLoad loads[2];
+  loads[LEFT].polyline = {{-1.0, 0.0}, {-1.0, 1.5}, {-1.0, 3.0}};
+  loads[RIGHT].polyline = {{2.0, 0.0}, {2.0, 1.0}, {2.0, 2.0}, {2.0, 3.0}};
+  loads[LEFT].total = {30.0, 0.0};
+  loads[RIGHT].total = {-30.0, 0.5};
+  RunState run;
+  run.counters = {7, 1, 2, 3};
+  run.inertial.value = 2e-4;
+  double v[OUTPUT_SIZE];
+  output_vector(chains, loads, run, Platens{0.0, 3.0}, 1e5, 0.004, v);
+  EXPECT_DOUBLE_EQ(v[AREA], 9.0);
+  EXPECT_DOUBLE_EQ(v[MEAN_WIDTH], 3.0);
+  EXPECT_DOUBLE_EQ(v[MID_WIDTH], 3.0);
+  EXPECT_EQ(v[CHAIN_LEFT], 2.0);
+  EXPECT_EQ(v[CHAIN_RIGHT], 3.0);
+  EXPECT_EQ(v[ESCAPED], 1.0);
+  EXPECT_EQ(v[FX_LEFT], 30.0);
+  EXPECT_EQ(v[FY_RIGHT], 0.5);
+  EXPECT_EQ(v[DETECTIONS], 7.0);
+  EXPECT_EQ(v[FAILURES], 1.0);
+  EXPECT_EQ(v[WIDENINGS], 2.0);
+  EXPECT_EQ(v[CHANGES], 3.0);
+  EXPECT_EQ(v[PRESSURE], 1e5);
+  EXPECT_EQ(v[CHAIN_STEP], 0.004);
+  EXPECT_EQ(v[INERTIAL], 2e-4);
+  // one side only: no area or widths, the other side's entries 0
+  chains[LEFT].active = false;
+  loads[LEFT] = SideLoad();
+  output_vector(chains, loads, run, Platens{0.0, 3.0}, 1e5, 0.004, v);
+  EXPECT_EQ(v[AREA], 0.0);
+  EXPECT_EQ(v[MID_WIDTH], 0.0);
+  EXPECT_EQ(v[CHAIN_LEFT], 0.0);
+  EXPECT_EQ(v[FX_LEFT], 0.0);
+}
+
+TEST(MembraneOutput, LengthLimitsAreRelativeToD50)
+{
+  EXPECT_EQ(band_problem(BAND_MIN * 0.002, 0.002), "");
+  EXPECT_NE(band_problem(0.5 * BAND_MIN * 0.002, 0.002), "");
+  EXPECT_NE(band_problem(1e-12, 0.002).find("is 5e-10 x D50 (D50 = 0.002)"), std::string::npos);
+  EXPECT_EQ(tolerance_problem(TOLERANCE_MAX * 0.002, 0.002), "");
+  const std::string t = tolerance_problem(0.02, 0.002);
+  EXPECT_NE(t.find("is 10 x D50"), std::string::npos) << t;
+  EXPECT_NE(t.find("typically 0.02 x D50 = 4e-05 (the default)"), std::string::npos) << t;
+}
+
+TEST(MembraneOutput, WarningsNameTheNumbers)
+{
+  const std::string c = chain_step_warning(42, 0.031, 1200);
+  EXPECT_NE(c.find("chain disk 42 moved 0.031 of its radius in one step at step 1200 (limit "
+                   "0.025; quasi-static chains move < 0.001)"),
+            std::string::npos)
+      << c;
+  InertialWindow w;
+  w.value = 2e-3;
+  w.rate = 0.5;
+  const std::string i = inertial_warning(w, 1e-3, 5000, 0.002, 2650, 1e5);
+  EXPECT_NE(i.find("I = 0.002 > 0.001 at step 5000 (axial strain rate 0.5 1/s"), std::string::npos)
+      << i;
+  EXPECT_NE(i.find("lower the loading rate below 0.25 1/s"), std::string::npos) << i;
+  EXPECT_EQ(restart_unreadable("m", "it is cut", false),
+            "the restart file's state of fix m cannot be read: it is cut");
+  EXPECT_NE(restart_unreadable("m", "x", true).find("read it with the version that wrote it"),
+            std::string::npos);
+}

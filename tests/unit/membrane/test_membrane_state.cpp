@@ -1,0 +1,214 @@
+// The state decisions of fix membrane2d (membrane_state.h) against
+// hand-worked cases: accepting a chain, the watch list, type switching, the
+// broadcast of a search result, the inertial-number window, when a detection
+// is needed, the default lengths and the side load.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "membrane_state.h"
+
+using namespace membrane;
+
+namespace {
+
+// five disks of radius 0.5 in a column from y = 0.5, touching; tags 10..14
+std::vector<Disk> column()
+{
+  std::vector<Disk> d;
+  for (int k = 0; k < 5; k++) d.push_back({10 + k, 0.0, 0.5 + k, 0.5});
+  return d;
+}
+
+} // namespace
+
+TEST(MembraneState, AcceptChainTakesTagsAndCountsChanges)
+{
+  SideChain s;
+  const std::vector<Disk> band = column();
+  ChainResult r;
+  r.ok = true;
+  r.chain = {0, 1, 2};
+  r.escaped = {4};
+  EXPECT_TRUE(accept_chain(s, band, r, nullptr)); // from nothing: a change
+  EXPECT_EQ(s.chain_tags, (std::vector<long>{10, 11, 12}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<long>{14}));
+  EXPECT_EQ(s.escaped_radius, (std::vector<double>{0.5}));
+  EXPECT_TRUE(s.watch_band.empty());               // no watch asked
+  EXPECT_FALSE(accept_chain(s, band, r, nullptr)); // the same chain again
+  r.escaped.clear();
+  EXPECT_TRUE(accept_chain(s, band, r, nullptr)); // an escapee less
+}
+
+TEST(MembraneState, ForgottenChainIsComparedWithTheNextOne)
+{
+  SideChain s;
+  const std::vector<Disk> band = column();
+  ChainResult r;
+  r.ok = true;
+  r.chain = {0, 1};
+  accept_chain(s, band, r, nullptr);
+  forget_chain(s);
+  EXPECT_TRUE(s.chain_tags.empty());
+  EXPECT_TRUE(s.watch.always);
+  EXPECT_EQ(s.forgotten_tags, (std::vector<long>{10, 11}));
+  // the same chain found again after a forget is no change
+  EXPECT_FALSE(accept_chain(s, band, r, nullptr));
+  EXPECT_TRUE(s.forgotten_tags.empty());
+}
+
+TEST(MembraneState, AcceptChainWithWatchKeepsTheBand)
+{
+  SideChain s;
+  s.side = Side::Right;
+  const std::vector<Disk> band = column();
+  ChainResult r;
+  r.ok = true;
+  r.chain = {0, 1, 2, 3, 4};
+  r.visited = {0, 1, 2, 3, 4};
+  const WatchSettings w{Platens{0.0, 5.0}, 0.01, 0.01};
+  accept_chain(s, band, r, &w);
+  ASSERT_EQ(s.watch_band.size(), 5u);
+  ASSERT_EQ(s.now.size(), 5u);
+  EXPECT_EQ(s.now[4].tag, 14);
+  EXPECT_DOUBLE_EQ(s.watch.budget, 0.01);
+}
+
+TEST(MembraneState, WatchListHasOneEntryPerDiskWithAllItsRoles)
+{
+  SideChain sides[2];
+  sides[LEFT].active = sides[RIGHT].active = true;
+  sides[LEFT].chain_tags = {4, 2};
+  sides[LEFT].escaped_tags = {6};
+  sides[RIGHT].chain_tags = {2, 8};
+  sides[RIGHT].watch.always = false;
+  sides[RIGHT].watch_band = {{8, 0, 0, 1}, {10, 0, 0, 1}};
+  sides[RIGHT].watch.disks = {0, 1};
+  std::vector<WatchEntry> list;
+  build_watch_list(sides, true, list);
+  ASSERT_EQ(list.size(), 5u);
+  EXPECT_EQ(list[0].tag, 2);
+  EXPECT_EQ(list[0].chain_position[LEFT], 1);
+  EXPECT_EQ(list[0].chain_position[RIGHT], 0);
+  EXPECT_EQ(list[1].tag, 4);
+  EXPECT_EQ(list[1].chain_position[LEFT], 0);
+  EXPECT_EQ(list[1].chain_position[RIGHT], -1);
+  EXPECT_EQ(list[2].tag, 6); // an escapee: no role
+  EXPECT_EQ(list[2].chain_position[LEFT], -1);
+  EXPECT_EQ(list[3].tag, 8);
+  EXPECT_EQ(list[3].chain_position[RIGHT], 1);
+  EXPECT_EQ(list[3].band_index[RIGHT], 0);
+  EXPECT_EQ(list[4].tag, 10);
+  EXPECT_EQ(list[4].band_index[RIGHT], 1);
+  EXPECT_EQ(find_watched(list, 8), &list[3]);
+  EXPECT_EQ(find_watched(list, 7), nullptr);
+  EXPECT_EQ(find_watched(list, 11), nullptr);
+  // every N: the watched relations are not gathered
+  build_watch_list(sides, false, list);
+  EXPECT_EQ(list.size(), 4u);
+  EXPECT_EQ(find_watched(list, 10), nullptr);
+}
+
+TEST(MembraneState, TypeChangesGiveLeavingDisksTheirOwnType)
+{
+  const std::map<long, int> own{{5, 1}, {3, 2}, {9, 1}};
+  const auto changes = type_changes({5, 3, 9, 11}, {9, 7}, own, 4);
+  // 11 leaves but its own type is unknown: left alone
+  const std::vector<std::pair<long, int>> want{{3, 2}, {5, 1}, {7, 4}, {9, 4}};
+  EXPECT_EQ(changes, want);
+  EXPECT_TRUE(type_changes({}, {}, own, 4).empty());
+}
+
+TEST(MembraneState, SearchResultSurvivesPackingAndCorruptOnesAreRefused)
+{
+  ChainResult r;
+  r.ok = false;
+  r.failure = "no disk touches the top";
+  r.chain = {3, 1};
+  r.escaped = {0, 7, 9};
+  r.visited = {1, 3, 5};
+  r.pruned = 2;
+  r.failed_starts = 4;
+  std::vector<int> buf;
+  pack_result(r, buf);
+  ChainResult back;
+  ASSERT_TRUE(unpack_result(buf.data(), buf.size(), back));
+  EXPECT_EQ(back.ok, r.ok);
+  EXPECT_EQ(back.failure, r.failure);
+  EXPECT_EQ(back.chain, r.chain);
+  EXPECT_EQ(back.escaped, r.escaped);
+  EXPECT_EQ(back.visited, r.visited);
+  EXPECT_EQ(back.pruned, 2);
+  EXPECT_EQ(back.failed_starts, 4);
+  EXPECT_FALSE(unpack_result(buf.data(), buf.size() - 1, back)); // cut
+  EXPECT_FALSE(unpack_result(buf.data(), 3, back));
+  buf[1] = -1;
+  EXPECT_FALSE(unpack_result(buf.data(), buf.size(), back));
+}
+
+TEST(MembraneState, InertialWindowWarnsOnlyForTwoWindowsInARow)
+{
+  // height 1 -> 0.99 over 10 steps of 1 ms: rate 1 /s; I = 1 x 1e-3 x sqrt(2650 / 1e5)
+  const double want = 1e-3 * std::sqrt(2650.0 / 1e5);
+  InertialWindow w;
+  EXPECT_FALSE(w.update(0, 1.0, 1e-3, 10, 1e-3, 2650.0, 1e5, 1e-4)); // opens
+  EXPECT_FALSE(w.update(5, 0.995, 1e-3, 10, 1e-3, 2650.0, 1e5, 1e-4));
+  EXPECT_FALSE(w.update(10, 0.99, 1e-3, 10, 1e-3, 2650.0, 1e5, 1e-4)); // first above
+  EXPECT_NEAR(w.rate, 1.0, 1e-12);
+  EXPECT_NEAR(w.value, want, 1e-15);
+  EXPECT_TRUE(w.was_above);
+  const double h = 0.99 * (1.0 - 0.01); // the same rate again
+  EXPECT_TRUE(w.update(20, h, 1e-3, 10, 1e-3, 2650.0, 1e5, 1e-4));
+  // at zero pressure there is no inertial number
+  EXPECT_FALSE(w.update(30, h * 0.99, 1e-3, 10, 1e-3, 2650.0, 0.0, 1e-4));
+  EXPECT_EQ(w.value, 0.0);
+  // a step before the window (a new run from an earlier state) restarts it
+  EXPECT_FALSE(w.update(3, 1.0, 1e-3, 10, 1e-3, 2650.0, 1e5, 1e-4));
+  EXPECT_EQ(w.first_step, 3);
+}
+
+TEST(MembraneState, DetectionIsNeededWhenDisksOrPlatensMoveTheBudget)
+{
+  SideChain sides[2];
+  sides[LEFT].active = sides[RIGHT].active = true;
+  for (SideChain &s : sides) s.watch.always = false; // nothing watched exactly
+  const Platens p{0.0, 1.0};
+  EXPECT_FALSE(detection_needed(sides, p, p, 0.01, 0.004, 0.01));
+  EXPECT_TRUE(detection_needed(sides, p, p, 0.01, 0.005, 0.01)); // 2 x 0.005 >= budget
+  EXPECT_TRUE(detection_needed(sides, Platens{0.0, 0.993}, p, 0.01, 0.004, 0.01));
+  EXPECT_FALSE(detection_needed(sides, Platens{0.0, 0.995}, p, 0.01, 0.004, 0.01));
+  sides[RIGHT].watch.always = true; // a result that could not be watched
+  EXPECT_TRUE(detection_needed(sides, p, p, 0.01, 0.0, 0.01));
+  sides[RIGHT].active = false;
+  EXPECT_FALSE(detection_needed(sides, p, p, 0.01, 0.0, 0.01));
+}
+
+TEST(MembraneState, LengthsAreTheGivenOnesOrTheDefaults)
+{
+  Definition def;
+  RunState run;
+  set_lengths(def, 0.002, run);
+  EXPECT_DOUBLE_EQ(run.band_width, DEFAULT_BAND * 0.002);
+  EXPECT_DOUBLE_EQ(run.search_width, run.band_width);
+  EXPECT_DOUBLE_EQ(run.tolerance, DEFAULT_TOLERANCE * 0.002);
+  def.band_given = 0.05;
+  def.tolerance_given = 0.0;
+  run.search_width = 0.3; // widened in an earlier run: kept
+  set_lengths(def, 0.002, run);
+  EXPECT_EQ(run.band_width, 0.05);
+  EXPECT_EQ(run.search_width, 0.3);
+  EXPECT_EQ(run.tolerance, 0.0);
+}
+
+TEST(MembraneState, SideLoadSumsToThePressureOnTheChord)
+{
+  // right side, two disks touching at (0, 1): polyline (0,0) (0,1) (0,2)
+  const std::vector<Disk> chain{{1, 0.0, 0.5, 0.5}, {2, 0.0, 1.5, 0.5}};
+  SideLoad load;
+  load_side(chain, Side::Right, Platens{0.0, 2.0}, 100.0, 0.1, load);
+  ASSERT_EQ(load.polyline.size(), 3u);
+  ASSERT_EQ(load.forces.size(), 2u);
+  // the sum is p t (-Dy, Dx) with D = (0, 2): (-20, 0)
+  EXPECT_NEAR(load.total.x(), -20.0, 1e-12);
+  EXPECT_NEAR(load.total.y(), 0.0, 1e-12);
+}
