@@ -10,7 +10,7 @@ import os
 
 import numpy as np
 
-from common import ROOT, fmt, markdown_table, read_context, read_rows, tag
+from common import fmt, read_context, read_rows, tag
 
 PUBLISHED_RATE = 0.02 / 60.0          # the published procedure's 2 %/min
 CASES = ("rigid", "membrane")
@@ -579,7 +579,3 @@ def plot(rows, scatter, path, tkey):
     plt.close(fig)
     return fronts
 
-
-if __name__ == "__main__":
-    import sys
-    sys.exit("run bench/accuracy_sweep.py --from-csv [--prefix PREFIX]: it makes this report")

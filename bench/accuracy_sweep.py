@@ -70,7 +70,6 @@ import os
 import shutil
 import sys
 import threading
-import time
 
 import numpy as np
 
@@ -316,7 +315,8 @@ def shear_command(run, args, restart):
                  "-var", "restart", restart, "-var", "meshdir", MESHES,
                  "-var", "rate", repr(run.rate), "-var", "dt", repr(run.dt),
                  "-var", "eatarget", repr(args.strain), "-var", "nout", str(run.nout),
-                 "-var", "ndump", str(run.ndump), "-var", "out", run.out, "-log", "log.shear"]
+                 "-var", "ndump", str(run.ndump), "-var", "out", run.out,
+                 "-log", os.path.join(run.dir, "log.shear")]
     if run.case == "membrane":
         cmd += ["-var", "every", str(run.every)]
     if not run.default_damping:
@@ -336,7 +336,8 @@ def execute(run, args, restart):
     log(f"  start {run.name}: {run.nsteps} steps, output every {run.nout}"
         + (f", {run.ranks} ranks" if run.ranks > 1 else ""))
     screen = os.path.join(run.dir, "screen.txt")
-    rc, wall, cpu = common.run_command(cmd, run.dir, screen, timeout)
+    # in the frozen scripts' folder, where LIGGGHTS finds their includes
+    rc, wall, cpu = common.run_command(cmd, os.path.dirname(run.script), screen, timeout)
     tloop, nsteps = common.loop_times(os.path.join(run.dir, "log.shear"))
     done = [l for l in open(screen, errors="replace").read().splitlines() if l.startswith("SHEAR done")]
     meta = dict(params=run.params, rc=rc, process_wall_s=wall, cpu_s=cpu, loop_time_s=tloop,
@@ -550,27 +551,18 @@ def freeze(args):
     args.default_damping = {c: script_damping(os.path.join(EXAMPLES, f"in.shear_{c}")) for c in args.scripts}
 
 
-def main(argv):
-    args = parse_args(argv)
-    args.argv = argv
-    if args.from_csv:
-        print(report(args.prefix))
-        return 0
-    t_start = time.time()
+def sweep(args, t_start):
+    """Plan, run the missing runs, collect: the report (common.finish_sweep)."""
     freeze(args)
     plan = Plan(args)
     run_plan(plan, args)
-    executed = [r.name for r in plan.runs.values() if r.meta.get("executed_now")]
-    inv_file = os.path.join(args.rundir, "invocations.json")
-    invocations = common.load_invocations(inv_file)
-    if executed:
-        invocations = common.record_invocation(inv_file, dict(
-            start=common.started(t_start), wall_s=time.time() - t_start, runs=executed, argv=argv))
-    rows, ctx = collect(plan, args, invocations, (time.time() - t_start) / 60 if executed else None)
-    common.write_rows(args.prefix + ".csv", rows, CSV_KEYS)
-    common.write_context(args.prefix + ".json", ctx)
-    print(report(args.prefix))
-    return 0
+    return common.finish_sweep(plan.runs.values(), os.path.join(args.rundir, "invocations.json"), t_start,
+                              lambda executed: dict(runs=executed, argv=args.argv),
+                              lambda inv, took: collect(plan, args, inv, took), args.prefix, CSV_KEYS, report)
+
+
+def main(argv):
+    return common.sweep_main(argv, parse_args, report, sweep)
 
 
 if __name__ == "__main__":

@@ -125,15 +125,29 @@ def freeze_executable(exe, folder, report_only):
     return copy, (sha(copy) if os.path.exists(copy) else "?")
 
 
+def script_set(src):
+    """An input script and the files LIGGGHTS may include with it: every *.inc of its
+    folder (an include is relative to the working directory, and some are named by a
+    variable: include ${extra})."""
+    folder = os.path.dirname(os.path.abspath(src))
+    return [os.path.abspath(src)] + sorted(os.path.join(folder, f) for f in os.listdir(folder)
+                                           if f.endswith(".inc"))
+
+
 def freeze_script(src, folder):
-    """Copy an input script into folder by its content hash: (path of the copy, hash).
-    Runs made with another version of a script are re-run, never mixed."""
-    h = sha(src)
-    copy = os.path.join(folder, f"{os.path.basename(src)}.{h}")
-    if not os.path.exists(copy):
-        os.makedirs(folder, exist_ok=True)
-        shutil.copy2(src, copy)
-    return copy, h
+    """Copy an input script and its includes (script_set) into folder/NAME.HASH/, HASH
+    over all of them: (path of the script's copy, HASH). Runs made with another version
+    of a script or of an include are re-run, never mixed; a run uses the copy's folder
+    as its working directory (where LIGGGHTS finds the includes)."""
+    files = script_set(src)
+    h = sha_text("".join(os.path.basename(f) + "\0" + _text(f) for f in files))
+    target = os.path.join(folder, f"{os.path.basename(src)}.{h}")
+    if not os.path.exists(os.path.join(target, os.path.basename(src))):
+        os.makedirs(target + ".new", exist_ok=True)
+        for f in files:
+            shutil.copy2(f, target + ".new")
+        os.replace(target + ".new", target)
+    return os.path.join(target, os.path.basename(src)), h
 
 
 def generate_sample(scale, seed, data):
@@ -265,6 +279,32 @@ def load_invocations(inv_file):
 
 def started(t_start):
     return time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(t_start))
+
+
+def sweep_main(argv, parse_args, report, sweep):
+    """The command line of a sweep: with --from-csv the report again from PREFIX.csv
+    and PREFIX.json (report(prefix)); otherwise sweep(args, start time) plans, runs and
+    collects, and returns the report (finish_sweep). The report is printed."""
+    args = parse_args(argv)
+    args.argv = argv
+    print(report(args.prefix) if args.from_csv else sweep(args, time.time()))
+    return 0
+
+
+def finish_sweep(runs, inv_file, t_start, entry, collect, prefix, csv_keys, report):
+    """The end of a sweep's run step: record the invocation when it executed runs
+    (entry(names of the runs executed): what else to record), collect the rows and the
+    context (collect(invocations, minutes of this invocation or None)), write
+    PREFIX.csv and PREFIX.json and make the report from them (report(prefix))."""
+    executed = [r.name for r in runs if r.meta.get("executed_now")]
+    invocations = load_invocations(inv_file)
+    if executed:
+        invocations = record_invocation(inv_file, dict(start=started(t_start), wall_s=time.time() - t_start,
+                                                       **entry(executed)))
+    rows, ctx = collect(invocations, (time.time() - t_start) / 60 if executed else None)
+    write_rows(prefix + ".csv", rows, csv_keys)
+    write_context(prefix + ".json", ctx)
+    return report(prefix)
 
 
 # ----------------------------------------------------------------------------- report inputs

@@ -76,10 +76,16 @@ class Helpers(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             src = os.path.join(d, "in.test")
             with open(src, "w") as f:
+                f.write("include a.inc\n")
+            with open(os.path.join(d, "a.inc"), "w") as f:
                 f.write("variable kn index 1\n")
             copy, h = common.freeze_script(src, os.path.join(d, "inputs"))
-            self.assertEqual(os.path.basename(copy), "in.test." + h)
-            self.assertEqual(h, common.sha_text("variable kn index 1\n"))
+            self.assertEqual(copy, os.path.join(d, "inputs", "in.test." + h, "in.test"))
+            self.assertEqual(h, common.sha_text("in.test\0include a.inc\na.inc\0variable kn index 1\n"))
+            self.assertTrue(os.path.exists(os.path.join(os.path.dirname(copy), "a.inc")))
+            with open(os.path.join(d, "a.inc"), "w") as f:          # an include changed: another copy
+                f.write("variable kn index 2\n")
+            self.assertNotEqual(common.freeze_script(src, os.path.join(d, "inputs"))[1], h)
             run = os.path.join(d, "run")
             os.makedirs(run)
             self.assertIsNone(common.known_meta(run, {"a": 1}, "ok", False, False))
