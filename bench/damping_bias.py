@@ -25,17 +25,19 @@ import sys
 
 import numpy as np
 
-from biaxial_runs import ROOT, HERE, shear
+from common import ROOT, HERE, script_parameters, shear
+from biaxial.params import number
 
-SIGMA3 = 1e5          # the confining stress of the shear scripts [Pa]
-GVISC = 500.0         # their default viscous damping [N s/m]
-RATE0 = 0.0025        # their default rate [1/s]
+# the confining stress [Pa], default viscous damping [N s/m], local damping and rate [1/s]
+# of the shear scripts, read from them
+SIGMA3, GVISC, ADAMP, RATE0 = (number(script_parameters("in.shear_rigid"), n)
+                               for n in ("sigma", "gvisc", "adamp", "rate"))
 
 # name -> the -var settings of in.shear_rigid
 SETTINGS = {
-    "viscous 500 N s/m, relative to the affine field (default)": {"damping": 0, "affine": 1},
-    "viscous 500 N s/m, absolute velocity": {"damping": 0, "affine": 0},
-    "local damping alpha 0.7 (the paper's)": {"damping": 1},
+    "viscous %g N s/m, relative to the affine field (default)" % GVISC: {"damping": 0, "affine": 1},
+    "viscous %g N s/m, absolute velocity" % GVISC: {"damping": 0, "affine": 0},
+    "local damping alpha %g (the paper's)" % ADAMP: {"damping": 1},
 }
 
 
@@ -56,9 +58,9 @@ def bias(restart, rate, strain, name, settings, np_, rundir):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--restart", default=os.path.join(ROOT, "out", "biaxial", "prepared.restart"))
-    ap.add_argument("--rates", type=float, nargs="+", default=[0.02 / 60, 0.0025, 0.01])
-    ap.add_argument("--strain", type=float, default=0.005, help="axial strain at 0.0025 /s; at another rate "
-                    "the strain of the same number of steps")
+    ap.add_argument("--rates", type=float, nargs="+", default=[0.02 / 60, RATE0, 0.01])
+    ap.add_argument("--strain", type=float, default=0.005, help="axial strain at the scripts' rate (%g /s); at "
+                    "another rate the strain of the same number of steps" % RATE0)
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=2)
     a = ap.parse_args()
@@ -80,11 +82,11 @@ def main():
     lines = ["# Damping bias on the platen stress",
              "",
              "`/usr/bin/python3 bench/damping_bias.py` (rigid walls, %d disks, sample %s, axial strain "
-             "to %g at 0.0025 /s, the same number of steps at the other rates; the rows after the platen "
+             "to %g at %g /s, the same number of steps at the other rates; the rows after the platen "
              "speed ramp). sdamp / sigma_3 = sum F_d,y (y - y_c) / (W H "
              "sigma_3), mean and standard deviation over the rows; the last column is the drag of fix viscous "
-             "500 N s/m on the affine field, gamma rate N H / (12 W sigma_3)."
-             % (rows[0]["atoms"], os.path.relpath(restart, ROOT), a.strain),
+             "%g N s/m on the affine field, gamma rate N H / (12 W sigma_3)."
+             % (rows[0]["atoms"], os.path.relpath(restart, ROOT), a.strain, RATE0, GVISC),
              "",
              "| setting | rate [1/s] | rows | sdamp / sigma_3 [%] | sd [%] | affine-drag estimate [%] |",
              "|---|---|---|---|---|---|"]

@@ -25,11 +25,14 @@ import os
 
 import numpy as np
 
-from biaxial_runs import HERE, ROOT, prepare, shear
+from common import HERE, ROOT, prepare, script_parameters, shear
 from biaxial.curves import analyse_curves
+from biaxial.params import number
 
-RHO, DT, RATE, GVISC, VMAX = 2e8, 1e-4, 0.0025, 500.0, 0.01   # the defaults of in.shear_*
-RHO_REAL = 2650.0
+# the defaults of in.shear_* (shear_setup.inc), read from the scripts
+RHO, DT, RATE, GVISC, VMAX = (number(script_parameters("in.shear_rigid"), n)
+                              for n in ("rho", "dt", "rate", "gvisc", "vmax"))
+RHO_REAL = 2650.0     # quartz [kg/m^3]
 
 
 def settings_for(rho, strain):

@@ -19,19 +19,11 @@ import os
 
 import numpy as np
 
-from biaxial_runs import HERE, ROOT, prepare, shear
+from common import HERE, ROOT, prepare, shear
+from biaxial.readers import read_columns
 
 EXTRA = os.path.join(HERE, "f0_origin.inc")
 COLUMNS = ["f0", "f0_walls", "f0_inner"]
-
-
-def read_f0(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    names = [l for l in lines if l.startswith("#")][-1].lstrip("#").split()
-    rows = np.array([[float(w) for w in l.split()] for l in lines if l and not l.startswith("#")
-                     and len(l.split()) == len(names)])
-    return {n: rows[:, k] for k, n in enumerate(names)}
 
 
 def one(case, seed, scale, strain, rundir):
@@ -39,7 +31,7 @@ def one(case, seed, scale, strain, rundir):
     restart = prepare(scale, seed, folder)
     out = os.path.join(folder, "shear_%s.txt" % case)
     shear(case, restart, out, {"eatarget": strain, "extra": EXTRA})
-    t = read_f0(out + ".f0")
+    t, _ = read_columns(out + ".f0")
     last = t["ea"] >= t["ea"][-1] - 0.02
     row = {"case": case, "seed": seed}
     for c in COLUMNS:

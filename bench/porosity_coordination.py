@@ -21,10 +21,8 @@ import os
 import re
 import time
 
-import biaxial_runs
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+import common
+from common import HERE, ROOT
 
 # the PREPARED line of in.prepare, the fields read here
 FIELDS = {
@@ -52,7 +50,7 @@ def prepare(scale, seed, n0, rundir):
     values and the seconds it took (about 0 when reused)."""
     folder = os.path.join(rundir, "scale%g_seed%d_n%g" % (scale, seed, n0))
     t0 = time.time()
-    biaxial_runs.prepare(scale, seed, folder, {"n0": n0})
+    common.prepare(scale, seed, folder, {"n0": n0})
     with open(os.path.join(folder, "screen.prepare")) as f:
         values = prepared_values(f.read())
     return values, time.time() - t0

@@ -9,6 +9,7 @@ given (default: the last one present in both files).
     plot_membrane.py --dump dump.membrane --polyline membrane.polyline --out chain.png
 """
 import argparse
+import os
 import sys
 
 import numpy as np
@@ -19,51 +20,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
-
-def read_dump(path):
-    """{timestep: structured rows} from a LIGGGHTS text dump."""
-    frames = {}
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            data = np.array([list(map(float, l.split())) for l in lines[i + 9:i + 9 + n]])
-            frames[step] = {c: data[:, k] for k, c in enumerate(cols)}
-            i += 9 + n
-        else:
-            i += 1
-    return frames
-
-
-def read_polylines(path):
-    """{timestep: {side: {'polyline': (n,2), 'chain': (m,6) tag x y r fx fy}}}."""
-    frames, step = {}, None
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        w = lines[i].split()
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            frames[step] = {}
-            i += 2
-        elif w[:2] == ["ITEM:", "POLYLINE"]:
-            side, n = w[2], int(w[3])
-            pts = np.array([list(map(float, l.split())) for l in lines[i + 1:i + 1 + n]])
-            frames[step].setdefault(side, {})["polyline"] = pts
-            i += 1 + n
-        elif w[:2] == ["ITEM:", "CHAIN"]:
-            side, n = w[2], int(w[3])
-            rows = np.array([list(map(float, l.split())) for l in lines[i + 1:i + 1 + n]])
-            frames[step].setdefault(side, {})["chain"] = rows
-            i += 1 + n
-        else:
-            i += 1
-    return frames
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from biaxial.readers import read_dump, read_polylines  # noqa: E402
 
 
 def main():
@@ -85,7 +43,7 @@ def main():
     if step not in steps:
         sys.exit("timestep %d is not in both files (have %s)" % (step, steps))
     d, p = dumps[step], polys[step]
-    flag = d[a.flag] if a.flag else d[list(d)[-1]]
+    flag = d[a.flag] if a.flag else d[[c for c in d if c != "step"][-1]]   # the last dump column
 
     colours = {0: "#d9d9d9", 1: "#4c72b0", 2: "#dd8452", 3: "#c44e52"}
     fmax = max((np.hypot(s["chain"][:, 4], s["chain"][:, 5]).max() for s in p.values()

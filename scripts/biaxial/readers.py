@@ -1,4 +1,6 @@
-"""Readers for the files written by examples/biaxial/in.shear_rigid and in.shear_membrane.
+"""Readers for the files written by examples/biaxial/in.shear_rigid and in.shear_membrane
+(and by the benchmarks' scripts, bench/in.*): every OUT-table and dump reader of the
+project is here.
 
 The columns of the OUT table are taken by name from its header line (the last
 comment line before the data), so that older runs without the fabric columns,
@@ -33,12 +35,14 @@ class OutputTable:
         return len(next(iter(self.columns.values()))) if self.columns else 0
 
 
-def read_output(path):
-    """Read an OUT table; lines after the header that do not have as many numbers
-    as the header has names (an interrupted write) are skipped. Repeated steps
-    (a line printed by both `run 1` and `fix print`) keep their first line."""
+def read_columns(path):
+    """{name: array} of a table whose columns are named by its header line (the last
+    '#' comment line before the data): an OUT table, the pressure table of
+    bench/in.stability_pressure, the f0 table of bench/f0_origin.inc. Lines after the
+    header that do not have as many numbers as the header has names (an interrupted
+    write) are skipped; the header names are returned too, in order."""
     header, rows = None, []
-    with open(path) as f:
+    with open(path, errors="replace") as f:
         for line in f:
             text = line.strip()
             if not text:
@@ -59,10 +63,17 @@ def read_output(path):
     if header is None:
         raise ValueError(f"{path}: no header line")
     data = np.array(rows, dtype=float).reshape(-1, len(header))
-    if "step" in header and len(data):
-        _, first = np.unique(data[:, header.index("step")], return_index=True)
-        data = data[np.sort(first)]
-    columns = {name: data[:, k] for k, name in enumerate(header)}
+    return {name: data[:, k] for k, name in enumerate(header)}, header
+
+
+def read_output(path):
+    """Read an OUT table (read_columns). Repeated steps (a line printed by both
+    `run 1` and `fix print`) keep their first line."""
+    columns, header = read_columns(path)
+    if "step" in columns and len(columns["step"]):
+        _, first = np.unique(columns["step"], return_index=True)
+        keep = np.sort(first)
+        columns = {name: col[keep] for name, col in columns.items()}
     if "s1/s3" not in columns and "s1" in columns and "s3" in columns:
         columns["s1/s3"] = columns["s1"] / columns["s3"]
     missing = [c for c in MECHANICAL_COLUMNS if c not in columns]
@@ -134,3 +145,45 @@ def read_dump(path, steps=None):
     wanted = None if steps is None else set(steps)
     return {s: read_dump_frame(path, off) for s, off in dump_steps(path)
             if wanted is None or s in wanted}
+
+
+def read_polylines(path):
+    """The polyline file of fix membrane2d (keyword `polyline N file`):
+    {step: {side: {'polyline': (n, 2) x y, 'chain': (m, 6) tag x y r fx fy}}}."""
+    frames, step = {}, None
+    with open(path) as f:
+        lines = f.read().splitlines()
+    i = 0
+    while i < len(lines):
+        w = lines[i].split()
+        if lines[i].startswith("ITEM: TIMESTEP"):
+            step = int(lines[i + 1])
+            frames[step] = {}
+            i += 2
+        elif w[:2] in (["ITEM:", "POLYLINE"], ["ITEM:", "CHAIN"]):
+            side, n = w[2], int(w[3])
+            block = np.array([[float(x) for x in l.split()] for l in lines[i + 1:i + 1 + n]])
+            frames[step].setdefault(side, {})["polyline" if w[1] == "POLYLINE" else "chain"] = block
+            i += 1 + n
+        else:
+            i += 1
+    return frames
+
+
+def read_data_diameters(path):
+    """The diameters of the Atoms section of a LAMMPS data file of
+    scripts/generate_sample.py (id type diameter density x y z)."""
+    d, inside = [], False
+    with open(path) as f:
+        for line in f:
+            t = line.split()
+            if not t:
+                continue
+            if t[0] == "Atoms":
+                inside = True
+                continue
+            if inside:
+                if not t[0].isdigit():
+                    break
+                d.append(float(t[2]))
+    return np.array(d)

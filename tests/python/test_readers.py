@@ -63,12 +63,48 @@ ITEM: ATOMS id x y radius f_mem
 1 0.011 0.009 0.0005 0
 """
 
+POLYLINE = """\
+ITEM: TIMESTEP
+100
+ITEM: POLYLINE left 3
+0.0 0.0
+0.001 0.05
+0.0 0.1
+ITEM: CHAIN left 2
+7 0.001 0.0 0.0005 -1.5 0.0
+9 0.001 0.1 0.0005 -2.5 0.25
+ITEM: TIMESTEP
+200
+ITEM: POLYLINE right 2
+0.075 0.0
+0.075 0.1
+"""
+
+DATA = """\
+LIGGGHTS data: 3 disks at HALF size
+
+3 atoms
+1 atom types
+
+-0.02 0.095 xlo xhi
+
+Atoms
+
+1 1 0.001 2e8 0.01 0.01 0
+2 1 0.0015 2e8 0.02 0.01 0
+3 1 0.0005 2e8 0.03 0.01 0
+
+Velocities
+1 0 0 0
+"""
+
 
 class Readers(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
         self.dir = self.tmp.name
-        for name, text in (("out", OUT), ("out.rose", ROSE), ("out.dump", DUMP)):
+        for name, text in (("out", OUT), ("out.rose", ROSE), ("out.dump", DUMP),
+                           ("out.polyline", POLYLINE), ("sample.data", DATA)):
             with open(os.path.join(self.dir, name), "w") as f:
                 f.write(textwrap.dedent(text))
 
@@ -114,6 +150,26 @@ class Readers(unittest.TestCase):
         np.testing.assert_array_equal(f0["f_mem"], [0, 0, 1])
         self.assertEqual(f1["step"], 5000)
         self.assertEqual(len(f1["id"]), 2)
+
+    def test_columns_keep_repeated_steps(self):
+        columns, header = readers.read_columns(os.path.join(self.dir, "out"))
+        self.assertEqual(header[-1], "extra_col")
+        np.testing.assert_array_equal(columns["step"], [0, 0, 500, 1000])   # no dedup here
+        self.assertEqual(columns["s1"][1], 111111)
+
+    def test_polylines(self):
+        frames = readers.read_polylines(os.path.join(self.dir, "out.polyline"))
+        self.assertEqual(sorted(frames), [100, 200])
+        left = frames[100]["left"]
+        np.testing.assert_array_equal(left["polyline"][:, 1], [0.0, 0.05, 0.1])
+        np.testing.assert_array_equal(left["chain"][:, 0], [7, 9])
+        self.assertEqual(left["chain"][1, 5], 0.25)
+        self.assertEqual(list(frames[200]), ["right"])
+        self.assertNotIn("chain", frames[200]["right"])
+
+    def test_data_diameters(self):
+        d = readers.read_data_diameters(os.path.join(self.dir, "sample.data"))
+        np.testing.assert_array_equal(d, [0.001, 0.0015, 0.0005])
 
     def test_increment_keeps_soil_present_in_both(self):
         from biaxial import field
