@@ -20,7 +20,7 @@ echo "ranks,lateral,every,ms_per_step" > $csv
 for np in 1 2; do
   for variant in "none 0 1" "kept 1 1000000000" "membrane 1 1" "membrane 1 auto" "membrane 1 10" "rigid 2 1"; do
     set -- $variant
-    line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.step_cost -log none \
+    line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.membrane_cost -log none \
              -var restart "$restart" -var lateral "$2" -var every "$3" -var nsteps "$nsteps" \
              -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
     ms=$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')

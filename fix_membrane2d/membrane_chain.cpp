@@ -90,10 +90,10 @@ void ChainFinder::build_graph(const std::vector<Disk> &disks, double tol)
     ++cell_start_[cell_of_[i] + 1];
   }
   for (std::size_t c = 0; c < nbucket_; ++c) cell_start_[c + 1] += cell_start_[c];
-  fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  next_slot_.assign(cell_start_.begin(), cell_start_.end() - 1);
   cell_items_.resize(n);
   for (int i = 0; i < n; ++i)
-    if (cell_of_[i] >= 0) cell_items_[fill_[cell_of_[i]]++] = i;
+    if (cell_of_[i] >= 0) cell_items_[next_slot_[cell_of_[i]]++] = i;
 
   nb_start_.assign(n, -1);
   nb_count_.assign(n, 0);
@@ -327,7 +327,7 @@ void ChainFinder::bin_segments(const Polyline &pl, Platens platens, double bin_h
   for (int pass = 0; pass < 2; ++pass) {
     if (pass == 1) {
       for (int b = 0; b < nbin_; ++b) bin_start_[b + 1] += bin_start_[b];
-      fill_.assign(bin_start_.begin(), bin_start_.end() - 1);
+      next_slot_.assign(bin_start_.begin(), bin_start_.end() - 1);
       bin_items_.resize(bin_start_[nbin_]);
     }
     for (std::size_t k = 0; k < nseg; ++k) {
@@ -337,7 +337,7 @@ void ChainFinder::bin_segments(const Polyline &pl, Platens platens, double bin_h
         if (pass == 0) {
           ++bin_start_[b + 1];
         } else {
-          bin_items_[fill_[b]++] = static_cast<int>(k);
+          bin_items_[next_slot_[b]++] = static_cast<int>(k);
           bin_xmin_[b] = std::min({bin_xmin_[b], pl[k].x(), pl[k + 1].x()});
           bin_xmax_[b] = std::max({bin_xmax_[b], pl[k].x(), pl[k + 1].x()});
         }

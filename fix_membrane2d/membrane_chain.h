@@ -87,7 +87,7 @@ class ChainFinder {
   double tol_ = 0.0, cell_ = 1.0;
   std::size_t nbucket_ = 16;
   mutable std::vector<int> nb_start_, nb_count_, nb_pool_;
-  std::vector<int> fill_;
+  std::vector<int> next_slot_; // counting sort: the next free slot of each cell / slab
   std::vector<int> candidates_;
   std::vector<int> chain_pos_; // position in the current chain or -1
   std::vector<char> pruned_, visited_;
