@@ -69,6 +69,8 @@ from stability_report import CSV_KEYS, report, short
 # the examples' defaults, from their input scripts (defined there once)
 _SHEAR = common.script_parameters("in.shear_rigid")
 KN0, RHO, SIGMA, DT0, ALPHA0 = (number(_SHEAR, n) for n in ("kn", "rho", "sigma", "dt", "alpha"))
+# the rest bench/in.stability_pressure takes from the examples
+MATERIAL = {n: _SHEAR[n] for n in ("mu", "rho", "vmax", "gvisc")}
 # warnings every run prints, not about stability
 BENIGN = ("Mesh for fix mesh/surface/stress has been scaled",
           "New thermo_style command, previous thermo_modify settings will be lost")
@@ -195,7 +197,8 @@ class Run:
             self.name = f"pressure_{sample.name}_x{tag(pfac)}_" + (f"ramp{nramp}" if nramp else "jump")
             self.nsteps = nramp + args.nhold
             self.vars = dict(sigma=repr(SIGMA), ptarget=repr(pfac * SIGMA), nramp=str(nramp), nhold=str(args.nhold),
-                             nout="21", dt=repr(dt), kn=repr(kn), guard=str(int(args.has_guard)))
+                             nout="21", dt=repr(dt), kn=repr(kn), alpha=repr(alpha),
+                             guard=str(int(args.has_guard)), **MATERIAL)
             self.script = args.scripts["pressure"]
         else:
             self.name = f"{case}_{sample.name}_dt{dt:.4g}_a{tag(alpha)}_kn{kn:.4g}"

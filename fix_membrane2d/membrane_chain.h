@@ -1,4 +1,6 @@
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE_CHAIN_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE_CHAIN_H
+
 // LIGGGHTS-free geometry of fix membrane2d (doc/fix_membrane2d.md):
 // chain of outermost disks per side, its polyline, membrane forces, escapees,
 // sample area / widths and the band selection. Lengths in m, pressure in Pa,
@@ -260,3 +262,5 @@ class BandSlices {
 };
 
 } // namespace membrane
+
+#endif
