@@ -76,7 +76,7 @@ for k in $(seq 1 "$samples"); do
   dir=$out/scale${scale}_seed$s
   dirs+=("$dir")
   mkdir -p "$dir"
-  prep_key="scale $scale seed $s np $np scripts $(script_hash in.prepare "$root/scripts/generate_sample.py")"
+  prep_key="scale $scale seed $s np $np scripts $(script_hash in.prepare material.inc "$root/scripts/generate_sample.py")"
   if [ "$(cat "$dir/prepare.key" 2>/dev/null)" = "$prep_key" ] \
       && grep -qE "^PREPARED porosity" "$dir/screen.prepare" 2>/dev/null; then
     echo "== sample $k of $samples: scale $scale, seed $s: prepared before, reused"
@@ -94,7 +94,7 @@ for k in $(seq 1 "$samples"); do
   fi
 
   for case in rigid membrane; do
-    shear_key="$prep_key rate $rate strain $strain ${shear_vars[*]} scripts $(script_hash in.shear_$case shear_setup.inc shear_measure.inc shear_loading.inc damping.inc)"
+    shear_key="$prep_key rate $rate strain $strain ${shear_vars[*]} scripts $(script_hash in.shear_$case material.inc shear_setup.inc shear_measure.inc shear_loading.inc damping.inc)"
     if [ "$(cat "$dir/shear_$case.key" 2>/dev/null)" = "$shear_key" ] \
         && grep -qE "^SHEAR done" "$dir/screen.shear_$case" 2>/dev/null; then
       echo "== shear, $case, seed $s: done before, reused"
