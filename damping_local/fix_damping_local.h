@@ -8,7 +8,8 @@
    It damps the force as it stands when its post_force runs: LIGGGHTS calls
    post_force in the order the fixes were defined, so define this fix after
    every fix that adds forces (addforce, gravity, wall/gran, membrane2d, ...).
-   Maths in local_damping.h (no LIGGGHTS). The damping force of the step
+   Maths in local_damping.h, the fixes that may follow it and the warning
+   about the others in damping_order.h (no LIGGGHTS). The damping force of the step
    is kept per atom (an N x 3 array) for output, e.g. its moment about the
    sample centre: the bias it puts on a boundary stress.
 ------------------------------------------------------------------------- */
@@ -21,8 +22,8 @@ FixStyle(damping/local,FixDampingLocal)
 
 #else
 
-#ifndef LMP_FIX_DAMPING_LOCAL_H
-#define LMP_FIX_DAMPING_LOCAL_H
+#ifndef LIGGGHTS_MEMBRANE_FIX_DAMPING_LOCAL_H
+#define LIGGGHTS_MEMBRANE_FIX_DAMPING_LOCAL_H
 
 #include <set>
 #include <string>
