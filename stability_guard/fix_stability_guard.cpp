@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 
 #include "atom.h"
@@ -124,26 +125,29 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
              atom->atom_style + "; use atom_style granular"));
 
   nevery = DEFAULT_EVERY;
+  // the four limits are read alike: a number > 0 and <= the largest that is meaningful
+  const struct {
+    const char *key;
+    const std::string &usage;
+    double max;
+    double &value;
+  } limits[] = {{"move", MOVE_USAGE, MAX_MOVE, move_limit},
+                {"overlap", OVERLAP_USAGE, MAX_OVERLAP, overlap_limit},
+                {"timestep", TIMESTEP_USAGE, MAX_TIME_STEP, time_step_limit},
+                {"ilimit", ILIMIT_USAGE, MAX_ILIMIT, inertial_limit}};
   std::string ilimit_text; // as written, when given
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
-  auto limit = [&](const std::string &usage, double max) {
-    const double v = args.number(usage);
-    if (!(v > 0.0 && v <= max)) args.bad("must be a number > 0 and <= " + number_text(max), usage);
-    return v;
-  };
   while (args.more()) {
     const std::string &key = args.keyword();
-    if (key == "every") {
+    const auto limit = std::find_if(std::begin(limits), std::end(limits),
+                                    [&](const auto &l) { return key == l.key; });
+    if (limit != std::end(limits)) {
+      limit->value = args.number(limit->usage);
+      if (!(limit->value > 0.0 && limit->value <= limit->max))
+        args.bad("must be a number > 0 and <= " + number_text(limit->max), limit->usage);
+      if (key == "ilimit") ilimit_text = args.current_value();
+    } else if (key == "every") {
       nevery = static_cast<int>(args.integer(1, MAX_EVERY, EVERY_USAGE));
-    } else if (key == "move") {
-      move_limit = limit(MOVE_USAGE, MAX_MOVE);
-    } else if (key == "overlap") {
-      overlap_limit = limit(OVERLAP_USAGE, MAX_OVERLAP);
-    } else if (key == "timestep") {
-      time_step_limit = limit(TIMESTEP_USAGE, MAX_TIME_STEP);
-    } else if (key == "ilimit") {
-      inertial_limit = limit(ILIMIT_USAGE, MAX_ILIMIT);
-      ilimit_text = args.current_value();
     } else if (key == "inertial") {
       // a variable's sign is checked whenever it is evaluated (check_inertial_number)
       rate_in.read(args, ScalarInput::Sign::NonNegative, INERTIAL_USAGE);

@@ -1,15 +1,3 @@
-/* ----------------------------------------------------------------------
-   fix stability/guard: watches a 2D granular run every N steps and stops
-   it with an error that says what to change once it has gone unstable
-   (non-finite values, a disk moving a large fraction of its radius per
-   step, lost atoms); warns once each when the time step, the overlaps or
-   the inertial number leave their safe range. See
-   doc/fix_stability_guard.md. The measures and decisions are in
-   stability_checks.h, the wording in guard_messages.h (no LIGGGHTS);
-   this class gathers the atoms and contacts, reduces over the ranks and
-   raises or prints what they return.
-------------------------------------------------------------------------- */
-
 #ifdef FIX_CLASS
 
 // clang-format off
@@ -28,6 +16,14 @@ FixStyle(stability/guard,FixStabilityGuard)
 
 namespace LAMMPS_NS {
 
+// fix stability/guard: watches a 2D granular run every N steps and stops it
+// with an error that says what to change once it has gone unstable (non-finite
+// values, a disk moving a large fraction of its radius per step, lost atoms);
+// warns once each when the time step, the overlaps or the inertial number
+// leave their safe range. See doc/fix_stability_guard.md. The measures and
+// decisions are in stability_checks.h, the wording in guard_messages.h (no
+// LIGGGHTS); this class gathers the atoms and contacts, reduces over the ranks
+// and raises or prints what those return.
 class FixStabilityGuard : public Fix {
  public:
   FixStabilityGuard(class LAMMPS *, int, char **);
