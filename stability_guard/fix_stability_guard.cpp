@@ -34,7 +34,7 @@
 #include "scalar_input.h"
 #include "style_args.h"
 
-#include "guard_messages.h"
+#include "stability_messages.h"
 #include "stability_checks.h"
 
 using namespace LAMMPS_NS;

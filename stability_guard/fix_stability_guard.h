@@ -21,7 +21,7 @@ namespace LAMMPS_NS {
 // values, a disk moving a large fraction of its radius per step, lost atoms);
 // warns once each when the time step, the overlaps or the inertial number
 // leave their safe range. See doc/fix_stability_guard.md. The measures and
-// decisions are in stability_checks.h, the wording in guard_messages.h (no
+// decisions are in stability_checks.h, the wording in stability_messages.h (no
 // LIGGGHTS); this class gathers the atoms and contacts, reduces over the ranks
 // and raises or prints what those return.
 class FixStabilityGuard : public Fix {

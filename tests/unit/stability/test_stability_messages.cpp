@@ -1,10 +1,11 @@
-// The number-only texts of fix stability/guard, against the texts the script
-// tests (tests/scripts/stability_guard_errors.in) and the doc page quote.
+// The number-only texts of the stability messages, against the texts the script
+// tests (tests/scripts/stability_guard*.in) and the doc page quote.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
-#include "guard_messages.h"
+#include "stability_messages.h"
 
 using namespace stability;
 
@@ -75,4 +76,45 @@ TEST(GuardWarnings, InertialNumber)
   EXPECT_EQ(inertial_overflow(10, 1.0, 1e-300),
             "the inertial number overflows at step 10 (R = 1, P = 1e-300); the pressure is too "
             "small for the rate");
+}
+
+namespace {
+
+// a disk of radius 1 mm and density 2e8 (per unit thickness): m = pi 1e-6 2e8 = 628.3 kg;
+// with k_n = 8.45e7 N/m the contact time is sqrt(628.3 / 8.45e7) = 2.7268e-3 s
+const double MASS = M_PI * 1e-6 * 2e8;
+constexpr double KN = 8.45e7;
+
+} // namespace
+
+TEST(TimeStepWarning, WithinTheSafeStepOnlyAStricterLimitIsExceeded)
+{
+  // dt 1e-5 = 0.00367 x 2.7268e-3; the step that meets limit 1e-9: 1e-9 x 2.7268e-3
+  EXPECT_EQ(time_step_warning(1e-5, MASS, KN, 1e-9),
+            "time step 1e-05 s is 0.0037 x sqrt(m_min/k_n) = 0.00273 s (m_min = 628 kg, k_n = "
+            "8.45e+07 N/m), above the limit 1e-09; it is within 0.15 x sqrt(m_min/k_n), the "
+            "published set-up, which is safe: keep it, or use timestep <= 2.7e-12 only to stay "
+            "below the limit");
+}
+
+TEST(TimeStepWarning, AboveTheSafeStepTheStepToUse)
+{
+  // dt = 0.2 x 2.7268e-3 = 5.4536e-4 against limit 0.1: use 0.1 x 2.7268e-3 = 2.7e-4
+  EXPECT_EQ(time_step_warning(0.2 * 2.72680e-3, MASS, KN, 0.1),
+            "time step 0.00054536 s is 0.2 x sqrt(m_min/k_n) = 0.00273 s (m_min = 628 kg, k_n = "
+            "8.45e+07 N/m), above the limit 0.1: use timestep <= 0.00027 (0.1 x sqrt(m_min/k_n))");
+  // limit 0.2 at 0.25: the safe 0.15 x 2.7268e-3 = 4.1e-4 is what to use
+  EXPECT_EQ(time_step_warning(0.25 * 2.72680e-3, MASS, KN, 0.2),
+            "time step 0.0006817 s is 0.25 x sqrt(m_min/k_n) = 0.00273 s (m_min = 628 kg, k_n = "
+            "8.45e+07 N/m), above the limit 0.2: use timestep <= 0.00041 (0.15 x sqrt(m_min/k_n), "
+            "the published set-up)");
+}
+
+TEST(TimeStepWarning, AbovePoorlyResolved)
+{
+  EXPECT_EQ(time_step_warning(0.5 * 2.72680e-3, MASS, KN, 0.3),
+            "time step 0.0013634 s is 0.5 x sqrt(m_min/k_n) = 0.00273 s (m_min = 628 kg, k_n = "
+            "8.45e+07 N/m), above the limit 0.3; above 0.3 the contacts are poorly resolved and "
+            "the run may go unstable: reduce it, use timestep <= 0.00041 (0.15 x "
+            "sqrt(m_min/k_n), the published set-up)");
 }

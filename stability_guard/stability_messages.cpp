@@ -1,4 +1,4 @@
-#include "guard_messages.h"
+#include "stability_messages.h"
 
 #include <cstdarg>
 #include <cstdio>
@@ -23,6 +23,28 @@ std::string format(const char *fmt, ...)
 }
 
 } // namespace
+
+std::string time_step_warning(double dt, double mass_min, double stiffness_max, double limit)
+{
+  const double ratio = time_step_ratio(dt, mass_min, stiffness_max);
+  const double fraction = limit < TIME_STEP_SAFE ? limit : TIME_STEP_SAFE;
+  const double suggested = safe_time_step(fraction, mass_min, stiffness_max);
+  const char *published = fraction == TIME_STEP_SAFE ? ", the published set-up" : "";
+  const std::string what =
+      format("time step %g s is %.2g x sqrt(m_min/k_n) = %.3g s (m_min = %.3g "
+             "kg, k_n = %.3g N/m), above the limit %g",
+             dt, ratio, contact_time(mass_min, stiffness_max), mass_min, stiffness_max, limit);
+  if (ratio > TIME_STEP_POORLY_RESOLVED)
+    return what + format("; above %g the contacts are poorly resolved and the run may go "
+                         "unstable: reduce it, use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)",
+                         TIME_STEP_POORLY_RESOLVED, suggested, fraction, published);
+  if (ratio > TIME_STEP_SAFE)
+    return what + format(": use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)", suggested, fraction,
+                         published);
+  return what + format("; it is within %g x sqrt(m_min/k_n), the published set-up, which is "
+                       "safe: keep it, or use timestep <= %.2g only to stay below the limit",
+                       TIME_STEP_SAFE, suggested);
+}
 
 std::string unstable_hint(double time_step_ratio)
 {
