@@ -4,7 +4,6 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "grain_size.h"
 #include "math_const.h"
 #include "stability_checks.h"
+#include "stability_messages.h"
 
 // The two numbers that set the contact time scale sqrt(m/k) of a linear
 // granular contact model: the largest normal stiffness of the per-type-pair
@@ -80,48 +80,21 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
 }
 
 // Warns (on rank 0) when the time step exceeds `limit` x sqrt(m_min/k_n) of
-// the group, naming the style through `prefix`; `warned_dt` holds the step
-// last warned about, so each run of a script with the same dt does not repeat
-// it. What it says depends on how large the step is, not only on the limit:
-// above 0.3 (poorly resolved contacts) it says to reduce the step to 0.15 of
-// sqrt(m_min/k_n) (the published set-up); a step within 0.15 exceeds only a
-// stricter limit, and is called safe. Returns dt / sqrt(m_min/k_n), 0 when the
-// contact model has no linear stiffness table to check against.
+// the group, naming the style through `prefix` (the wording, which depends on
+// how large the step is, is stability::time_step_warning); `warned_dt` holds
+// the step last warned about, so each run of a script with the same dt does
+// not repeat it. Returns dt / sqrt(m_min/k_n), 0 when the contact model has no
+// linear stiffness table to check against.
 inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm world,
                               const std::string &prefix, double limit, double &warned_dt)
 {
-  constexpr double poorly_resolved = stability::TIME_STEP_POORLY_RESOLVED;
-  constexpr double safe = stability::TIME_STEP_SAFE;
   const double kmax = max_normal_stiffness(lmp, prefix.c_str());
   const double mmin = min_group_mass(lmp, groupbit, world);
   const double dt = lmp->update->dt;
   const double ratio = stability::time_step_ratio(dt, mmin, kmax);
-  if (ratio > limit && dt != warned_dt && lmp->comm->me == 0) {
-    const double fraction = std::min(limit, safe);
-    const double suggested = stability::safe_time_step(fraction, mmin, kmax);
-    char buf[768];
-    int n = snprintf(buf, sizeof(buf),
-                     "time step %g s is %.2g x sqrt(m_min/k_n) = %.3g s (m_min = %.3g kg, "
-                     "k_n = %.3g N/m), above the limit %g",
-                     dt, ratio, stability::contact_time(mmin, kmax), mmin, kmax, limit);
-    if (n < 0 || n >= static_cast<int>(sizeof(buf))) n = static_cast<int>(sizeof(buf)) - 1;
-    const size_t rest = sizeof(buf) - static_cast<size_t>(n);
-    if (ratio > poorly_resolved)
-      snprintf(buf + n, rest,
-               "; above %g the contacts are poorly resolved and the run may go "
-               "unstable: reduce it, use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)",
-               poorly_resolved, suggested, fraction,
-               fraction == safe ? ", the published set-up" : "");
-    else if (ratio > safe)
-      snprintf(buf + n, rest, ": use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)", suggested,
-               fraction, fraction == safe ? ", the published set-up" : "");
-    else
-      snprintf(buf + n, rest,
-               "; it is within %g x sqrt(m_min/k_n), the published set-up, which is "
-               "safe: keep it, or use timestep <= %.2g only to stay below the limit",
-               safe, suggested);
-    lmp->error->warning(FLERR, (prefix + buf).c_str());
-  }
+  if (ratio > limit && dt != warned_dt && lmp->comm->me == 0)
+    lmp->error->warning(FLERR,
+                        (prefix + stability::time_step_warning(dt, mmin, kmax, limit)).c_str());
   if (ratio > limit) warned_dt = dt;
   return ratio;
 }

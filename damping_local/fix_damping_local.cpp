@@ -16,6 +16,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include "damping_order.h"
 #include "local_damping.h"
 #include "style_args.h"
 
@@ -25,38 +26,31 @@ using namespace FixConst;
 namespace {
 
 const std::string PREFIX = "Fix damping/local: ";
+// alpha < 1: a force that drives the motion is reduced to (1 - alpha) of its
+// size, so at 1 nothing would ever accelerate. alpha has no default; PFC's is
+// quoted to the user.
+constexpr double MAX_ALPHA = 1.0;
+constexpr double PFC_ALPHA = 0.7;
+constexpr bool DEFAULT_TORQUE = true;
+
 std::string msg(const std::string &text)
 {
   return PREFIX + text;
 }
 
-const char *const ALPHA_USAGE =
-    "alpha A, the local damping coefficient, a number >= 0 and < 1 (PFC's default is 0.7)";
-const char *const TORQUE_USAGE = "torque yes or no, damp the torque as well (default yes)";
-
-// Fixes whose post_force adds no force: it removes, projects or prescribes
-// force components (a damping force computed before is removed, projected or
-// replaced with the rest, as it should be), or does not touch forces at all,
-// so they may come after this fix.
-bool adds_no_force(const char *style)
-{
-  static const char *const constraints[] = {
-      "enforce2d", "freeze", "setforce", "lineforce", "planeforce",
-      // these read the force or act on heat and species only
-      "store/force", "heat/gran", "heat/gran/conduction", "couple/cfd/convection",
-      "couple/cfd/radiation", "couple/cfd/convectiveImpl", "couple/cfd/speciesConvection",
-      "sph/mixidx"};
-  for (const char *c : constraints)
-    if (strcmp(style, c) == 0) return true;
-  return false;
-}
+const std::string ALPHA_USAGE = "alpha A, the local damping coefficient, a number >= 0 and < " +
+                                number_text(MAX_ALPHA) + " (PFC's default is " +
+                                number_text(PFC_ALPHA) + ")";
+const std::string TORQUE_USAGE =
+    std::string("torque yes or no, damp the torque as well (default ") +
+    (DEFAULT_TORQUE ? "yes" : "no") + ")";
 
 } // namespace
 
 /* ---------------------------------------------------------------------- */
 
 FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), alpha(0.0), damp_torque(true), nmax(0), damping_force(nullptr)
+  : Fix(lammps, narg, arg), alpha(0.0), damp_torque(DEFAULT_TORQUE), nmax(0), damping_force(nullptr)
 {
   peratom_flag = 1; // the damping force F_d of the step, per atom
   size_peratom_cols = 3;
@@ -70,12 +64,11 @@ FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
     const std::string &key = args.keyword();
     if (key == "alpha") {
       alpha = args.number(ALPHA_USAGE);
-      if (!(alpha >= 0.0 && alpha < 1.0)) args.bad("must be a number >= 0 and < 1", ALPHA_USAGE);
+      if (!(alpha >= 0.0 && alpha < MAX_ALPHA))
+        args.bad("must be a number >= 0 and < " + number_text(MAX_ALPHA), ALPHA_USAGE);
       have_alpha = true;
     } else if (key == "torque") {
-      const std::string value = args.value(TORQUE_USAGE);
-      if (value != "yes" && value != "no") args.bad("must be yes or no", TORQUE_USAGE);
-      damp_torque = value == "yes";
+      damp_torque = args.yes_no(TORQUE_USAGE);
       if (damp_torque && !has_rotation)
         args.bad("the atom style has no per-atom torque and angular velocity to damp "
                  "(atom style sphere or granular has them)",
@@ -122,7 +115,7 @@ void FixDampingLocal::init()
     if (modify->fix[i] == this) self = i;
   for (int i = self + 1; i < modify->nfix; i++) {
     const Fix *other = modify->fix[i];
-    if (!(modify->fmask[i] & POST_FORCE) || adds_no_force(other->style)) continue;
+    if (!(modify->fmask[i] & POST_FORCE) || damping::adds_no_force(other->style)) continue;
     if (warned_order.count(other->id)) continue;
     long common = 0;
     for (int j = 0; j < atom->nlocal; j++)
@@ -130,23 +123,9 @@ void FixDampingLocal::init()
     MPI_Allreduce(MPI_IN_PLACE, &common, 1, MPI_LONG, MPI_SUM, world);
     if (common == 0) continue;
     warned_order.insert(other->id);
-    if (comm->me != 0) continue;
-    if (strcmp(other->style, style) == 0)
-      error->warning(FLERR,
-                     msg(std::string("fix ") + other->id + " (" + other->style + ") also damps " +
-                         std::to_string(common) + " atom(s) that fix " + id +
-                         " damps: their "
-                         "force is damped twice; give the two fixes groups without common "
-                         "atoms")
-                         .c_str());
-    else
-      error->warning(FLERR, msg(std::string("fix ") + other->id + " (" + other->style +
-                                ") is defined after fix " + id + " and acts in post_force on " +
-                                std::to_string(common) + " atom(s) that fix " + id +
-                                " damps: "
-                                "forces it adds to them are not damped; define fix " +
-                                id + " after fix " + other->id)
-                                .c_str());
+    if (comm->me == 0)
+      error->warning(
+          FLERR, msg(damping::order_warning(id, style, other->id, other->style, common)).c_str());
   }
 }
 

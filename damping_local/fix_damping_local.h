@@ -1,18 +1,3 @@
-/* ----------------------------------------------------------------------
-   fix damping/local: PFC's local (non-viscous) damping (Itasca PFC manual;
-   Momeni et al. 2024, eq. 5). In post_force, for each owned atom of the
-   group and each component, the unbalanced force becomes
-   F + F_d with F_d = -alpha |F| sign(v), and the torque T + T_d with
-   T_d = -alpha |T| sign(omega). See doc/fix_damping_local.md.
-
-   It damps the force as it stands when its post_force runs: LIGGGHTS calls
-   post_force in the order the fixes were defined, so define this fix after
-   every fix that adds forces (addforce, gravity, wall/gran, membrane2d, ...).
-   Maths in local_damping.h (no LIGGGHTS). The damping force of the step
-   is kept per atom (an N x 3 array) for output, e.g. its moment about the
-   sample centre: the bias it puts on a boundary stress.
-------------------------------------------------------------------------- */
-
 #ifdef FIX_CLASS
 
 // clang-format off
@@ -21,8 +6,8 @@ FixStyle(damping/local,FixDampingLocal)
 
 #else
 
-#ifndef LMP_FIX_DAMPING_LOCAL_H
-#define LMP_FIX_DAMPING_LOCAL_H
+#ifndef LIGGGHTS_MEMBRANE_FIX_DAMPING_LOCAL_H
+#define LIGGGHTS_MEMBRANE_FIX_DAMPING_LOCAL_H
 
 #include <set>
 #include <string>
@@ -31,6 +16,19 @@ FixStyle(damping/local,FixDampingLocal)
 
 namespace LAMMPS_NS {
 
+// fix damping/local: PFC's local (non-viscous) damping (Itasca PFC manual;
+// Momeni et al. 2024, eq. 5). In post_force, for each owned atom of the group
+// and each component, the unbalanced force becomes F + F_d with
+// F_d = -alpha |F| sign(v), and the torque T + T_d with T_d = -alpha |T| sign(omega).
+// See doc/fix_damping_local.md.
+//
+// It damps the force as it stands when its post_force runs: LIGGGHTS calls
+// post_force in the order the fixes were defined, so define this fix after
+// every fix that adds forces (addforce, gravity, wall/gran, membrane2d, ...).
+// The law is in local_damping.h, which fixes may follow it and the warning
+// about the others in damping_order.h (no LIGGGHTS). The damping force of the
+// step is kept per atom (an N x 3 array) for output, e.g. its moment about the
+// sample centre: the bias it puts on a boundary stress.
 class FixDampingLocal : public Fix {
  public:
   FixDampingLocal(class LAMMPS *, int, char **);

@@ -8,8 +8,8 @@
 //
 // so the damping force always opposes the motion, its size is a fraction alpha
 // of the unbalanced force, and a component that does not move is not damped.
-#ifndef DAMPING_LOCAL_DAMPING_H
-#define DAMPING_LOCAL_DAMPING_H
+#ifndef LIGGGHTS_MEMBRANE_LOCAL_DAMPING_H
+#define LIGGGHTS_MEMBRANE_LOCAL_DAMPING_H
 
 #include <cstddef>
 

@@ -13,9 +13,10 @@
 
 #include <algorithm>
 #include <climits>
-#include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 
 #include "atom.h"
@@ -32,6 +33,8 @@
 #include "restart_record.h"
 #include "scalar_input.h"
 #include "style_args.h"
+
+#include "stability_messages.h"
 #include "stability_checks.h"
 
 using namespace LAMMPS_NS;
@@ -42,26 +45,53 @@ namespace {
 const std::string PREFIX = "Fix stability/guard: ";
 constexpr double RECORD_MAGIC = 7.0e9 + 4871.0; // of this style's restart record
 constexpr int RECORD_VERSION = 1;
-constexpr double SAFE_TIME_STEP_RATIO = 0.15;  // x sqrt(m_min/k_n), the published set-up
-constexpr double BLOW_UP_STEP_FRACTION = 0.05; // |v| dt / r of a run that has blown up
+constexpr std::size_t RECORD_LENGTH = 7; // magic, version, length and the 4 fields written
+
+// The defaults (doc/fix_stability_guard.md, Default): the limits fix membrane2d
+// shares come from stability_checks.h. A stricter 'move' than the blow-up
+// fraction stops runs that need not be unstable; the default stops only those.
+constexpr int DEFAULT_EVERY = 100;
+constexpr double DEFAULT_MOVE = stability::STEP_FRACTION_BLOWN_UP;
+constexpr double DEFAULT_OVERLAP = 0.1;
+constexpr double DEFAULT_TIME_STEP = stability::TIME_STEP_POORLY_RESOLVED;
+constexpr double DEFAULT_ILIMIT = stability::INERTIAL_QUASI_STATIC;
+// The largest limits that keep each check meaningful (doc, Syntax): a disk
+// that moves or overlaps by its radius is far beyond what the checks are for;
+// above dt = 2 sqrt(m/k) velocity Verlet is unstable even for one contact; I > 1
+// is a collisional flow.
+constexpr long MAX_EVERY = 1000000000L;
+constexpr double MAX_MOVE = 1.0;
+constexpr double MAX_OVERLAP = 1.0;
+constexpr double MAX_TIME_STEP = 2.0;
+constexpr double MAX_ILIMIT = 1.0;
+
 std::string msg(const std::string &text)
 {
   return PREFIX + text;
 }
 
-const char *const EVERY_USAGE = "every N, check every N steps (default 100)";
-const char *const MOVE_USAGE =
-    "move F, stop the run when a disk moves more than F x its radius in one step, "
-    "a number > 0 and <= 1 (default 0.05)";
-const char *const OVERLAP_USAGE =
-    "overlap F, warn when two disks overlap by more than F x the smaller radius, "
-    "a number > 0 and <= 1 (default 0.1)";
-const char *const TIMESTEP_USAGE =
-    "timestep F, warn when dt > F x sqrt(m_min/k_n), a number > 0 and <= 2 "
-    "(velocity Verlet is unstable above 2 even for one contact; default 0.3)";
-const char *const ILIMIT_USAGE =
-    "ilimit L, warn when the inertial number exceeds L, a number > 0 and <= 1 (default 1e-3)";
-const char *const INERTIAL_USAGE =
+// "<what>, a number > 0 and <= <max> (<why the max>; default <default>)"
+std::string limit_usage(const std::string &what, double max, double fallback,
+                        const std::string &why_max = "")
+{
+  return what + ", a number > 0 and <= " + number_text(max) + " (" +
+         (why_max.empty() ? "" : why_max + "; ") + "default " + number_text(fallback) + ")";
+}
+
+const std::string EVERY_USAGE =
+    "every N, check every N steps (default " + std::to_string(DEFAULT_EVERY) + ")";
+const std::string MOVE_USAGE =
+    limit_usage("move F, stop the run when a disk moves more than F x its radius in one step",
+                MAX_MOVE, DEFAULT_MOVE);
+const std::string OVERLAP_USAGE =
+    limit_usage("overlap F, warn when two disks overlap by more than F x the smaller radius",
+                MAX_OVERLAP, DEFAULT_OVERLAP);
+const std::string TIMESTEP_USAGE = limit_usage(
+    "timestep F, warn when dt > F x sqrt(m_min/k_n)", MAX_TIME_STEP, DEFAULT_TIME_STEP,
+    "velocity Verlet is unstable above " + number_text(MAX_TIME_STEP) + " even for one contact");
+const std::string ILIMIT_USAGE =
+    limit_usage("ilimit L, warn when the inertial number exceeds L", MAX_ILIMIT, DEFAULT_ILIMIT);
+const std::string INERTIAL_USAGE =
     "inertial R P, the strain rate R >= 0 (1/time; use abs() for a signed rate) and the "
     "pressure P > 0 (force/area), each a number or v_name of an equal-style variable";
 
@@ -83,55 +113,54 @@ ValueTag max_over_ranks(ValueTag local, MPI_Comm world)
 /* ---------------------------------------------------------------------- */
 
 FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), move_limit(0.05), overlap_limit(0.1), time_step_limit(0.3),
-    inertial_limit(1e-3), check_inertial(false), d50(0.0), density(0.0), natoms0(0),
-    warned_overlap(false), warned_inertial(false), warnings(0)
+  : Fix(lammps, narg, arg), move_limit(DEFAULT_MOVE), overlap_limit(DEFAULT_OVERLAP),
+    time_step_limit(DEFAULT_TIME_STEP), inertial_limit(DEFAULT_ILIMIT), check_inertial(false),
+    d50(0.0), density(0.0), natoms0(0), warned_overlap(false), warned_inertial(false), warnings(0)
 {
   if (domain->dimension != 2)
-    error->all(FLERR, msg("requires dimension 2 (this run has dimension " +
-                          std::to_string(domain->dimension) + "); use dimension 2")
-                          .c_str());
+    fail(msg("requires dimension 2 (this run has dimension " + std::to_string(domain->dimension) +
+             "); use dimension 2"));
   if (!atom->radius_flag)
-    error->all(FLERR, msg(std::string("requires atom style sphere or granular (per-atom radius), "
-                                      "not ") +
-                          atom->atom_style + "; use atom_style granular")
-                          .c_str());
+    fail(msg(std::string("requires atom style sphere or granular (per-atom radius), not ") +
+             atom->atom_style + "; use atom_style granular"));
 
-  nevery = 100;
+  nevery = DEFAULT_EVERY;
+  // the four limits are read alike: a number > 0 and <= the largest that is meaningful
+  const struct {
+    const char *key;
+    const std::string &usage;
+    double max;
+    double &value;
+  } limits[] = {{"move", MOVE_USAGE, MAX_MOVE, move_limit},
+                {"overlap", OVERLAP_USAGE, MAX_OVERLAP, overlap_limit},
+                {"timestep", TIMESTEP_USAGE, MAX_TIME_STEP, time_step_limit},
+                {"ilimit", ILIMIT_USAGE, MAX_ILIMIT, inertial_limit}};
   std::string ilimit_text; // as written, when given
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
-  // a limit that is a number > 0 and <= hi
-  auto limit = [&](const char *usage, double hi) {
-    const double v = args.number(usage);
-    if (!(v > 0.0 && v <= hi)) args.bad("must be a number > 0 and <= " + number_text(hi), usage);
-    return v;
-  };
   while (args.more()) {
     const std::string &key = args.keyword();
-    if (key == "every") {
-      nevery = static_cast<int>(args.integer(1, 1000000000L, EVERY_USAGE));
-    } else if (key == "move") {
-      move_limit = limit(MOVE_USAGE, 1.0);
-    } else if (key == "overlap") {
-      overlap_limit = limit(OVERLAP_USAGE, 1.0);
-    } else if (key == "timestep") {
-      time_step_limit = limit(TIMESTEP_USAGE, 2.0);
-    } else if (key == "ilimit") {
-      inertial_limit = limit(ILIMIT_USAGE, 1.0);
-      ilimit_text = args.current_value();
+    const auto limit = std::find_if(std::begin(limits), std::end(limits),
+                                    [&](const auto &l) { return key == l.key; });
+    if (limit != std::end(limits)) {
+      limit->value = args.number(limit->usage);
+      if (!(limit->value > 0.0 && limit->value <= limit->max))
+        args.bad("must be a number > 0 and <= " + number_text(limit->max), limit->usage);
+      if (key == "ilimit") ilimit_text = args.current_value();
+    } else if (key == "every") {
+      nevery = static_cast<int>(args.integer(1, MAX_EVERY, EVERY_USAGE));
     } else if (key == "inertial") {
-      parse_inertial_value(args, rate_in, false);
-      parse_inertial_value(args, pressure_in, true);
+      // a variable's sign is checked whenever it is evaluated (check_inertial_number)
+      rate_in.read(args, ScalarInput::Sign::NonNegative, INERTIAL_USAGE);
+      pressure_in.read(args, ScalarInput::Sign::Positive, INERTIAL_USAGE);
       check_inertial = true;
     } else {
       args.unknown("every, move, overlap, timestep, inertial, ilimit");
     }
   }
   if (!ilimit_text.empty() && !check_inertial)
-    error->all(FLERR, keyword_message(PREFIX, "ilimit", ilimit_text,
-                                      "has no effect without keyword 'inertial'; add inertial R P, "
-                                      "or leave ilimit out")
-                          .c_str());
+    fail(keyword_message(PREFIX, "ilimit", ilimit_text,
+                         "has no effect without keyword 'inertial'; add inertial R P, or leave "
+                         "ilimit out"));
 
   vector_flag = 1;
   restart_global = 1;
@@ -139,29 +168,6 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
   global_freq = nevery;
   extvector = 0;
   std::fill(values, values + VECTOR_SIZE, 0.0);
-}
-
-/* ----------------------------------------------------------------------
-   one value of 'inertial R P': a number (checked here: R >= 0, P > 0, both
-   finite) or v_name (checked whenever it is evaluated)
-------------------------------------------------------------------------- */
-
-void FixStabilityGuard::parse_inertial_value(StyleArgs &args, ScalarInput &in, bool positive)
-{
-  const std::string text = args.value(INERTIAL_USAGE);
-  if (text.compare(0, 2, "v_") == 0) {
-    if (text.size() == 2) args.bad("names no variable", INERTIAL_USAGE);
-  } else {
-    char *end = nullptr;
-    const double v = strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0') args.bad("is not a number or v_name", INERTIAL_USAGE);
-    if (!std::isfinite(v)) args.bad("must be finite", INERTIAL_USAGE);
-    if (positive && !(v > 0.0))
-      args.bad("must be a positive number (the pressure P)", INERTIAL_USAGE);
-    if (!positive && !(v >= 0.0))
-      args.bad("must be a number >= 0 (the strain rate R)", INERTIAL_USAGE);
-  }
-  in.parse(lmp, PREFIX, "inertial", text.c_str());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -181,9 +187,8 @@ void FixStabilityGuard::init()
   }
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
   if (grains.empty)
-    error->all(FLERR, msg(std::string("the fix group '") + group->names[igroup] +
-                          "' has no atoms; use a group with the disks to watch")
-                          .c_str());
+    fail(msg(std::string("the fix group '") + group->names[igroup] +
+             "' has no atoms; use a group with the disks to watch"));
   d50 = grains.d50;
   density = grains.density;
   values[TIME_STEP_RATIO] =
@@ -199,20 +204,23 @@ void FixStabilityGuard::init()
 void FixStabilityGuard::setup(int)
 {
   natoms0 = count_group_atoms();
-  check_atoms();
-  check_lost_atoms();
-  check_overlaps();
-  values[WARNINGS] = warnings;
+  run_checks(false);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::end_of_step()
 {
-  check_atoms();
-  check_lost_atoms();
-  check_overlaps();
-  if (check_inertial) check_inertial_number();
+  run_checks(check_inertial);
+}
+
+// the checks of the setup and of every N steps; their measures are the output
+void FixStabilityGuard::run_checks(bool inertial)
+{
+  values[STEP_FRACTION] = check_atoms();
+  values[LOST] = static_cast<double>(check_lost_atoms());
+  values[OVERLAP] = check_overlaps();
+  if (inertial) values[INERTIAL] = check_inertial_number();
   values[WARNINGS] = warnings;
 }
 
@@ -242,86 +250,46 @@ void FixStabilityGuard::write_restart(FILE *fp)
 
 void FixStabilityGuard::restart(char *raw)
 {
-  RestartRecordReader in(reinterpret_cast<const double *>(raw), 7, RECORD_MAGIC, RECORD_VERSION);
+  RestartRecordReader in(reinterpret_cast<const double *>(raw), RECORD_LENGTH, RECORD_MAGIC,
+                         RECORD_VERSION);
   warnings = static_cast<int>(in.get());
   warned_overlap = in.get() != 0.0;
   warned_inertial = in.get() != 0.0;
   warned_dt = in.get();
   if (!in.finished())
-    error->all(FLERR, msg(std::string("the restart file's state of fix ") + id +
-                          " cannot be read: " + in.error() +
-                          "; define this fix with another ID to start its checks afresh")
-                          .c_str());
+    fail(msg(std::string("the restart file's state of fix ") + id + " cannot be read: " +
+             in.error() + "; define this fix with another ID to start its checks afresh"));
 }
 
 /* ----------------------------------------------------------------------
    non-finite values and disks that move a large fraction of their radius
    per step: the signature of an explicit integration that has blown up
-   (the kinetic energy grows without bound); stop before it writes garbage
+   (the kinetic energy grows without bound); stop before it writes garbage.
+   Returns the largest |v| dt / r.
 ------------------------------------------------------------------------- */
 
-void FixStabilityGuard::check_atoms()
+double FixStabilityGuard::check_atoms()
 {
   const stability::AtomScan scan =
       stability::scan_atoms(static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f,
                             atom->radius, atom->mask, groupbit, update->dt);
+  const double dt_ratio = values[TIME_STEP_RATIO];
 
   long nonfinite = scan.nonfinite;
   MPI_Allreduce(MPI_IN_PLACE, &nonfinite, 1, MPI_LONG, MPI_SUM, world);
   if (nonfinite > 0) {
     int first = scan.first_nonfinite >= 0 ? atom->tag[scan.first_nonfinite] : INT_MAX;
     MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, world);
-    error->all(FLERR,
-               msg(std::to_string(nonfinite) +
-                   " atom(s) have a non-finite position, velocity or "
-                   "force at step " +
-                   std::to_string(update->ntimestep) + " (first: atom " + std::to_string(first) +
-                   "): the run has gone unstable; " + unstable_hint())
-                   .c_str());
+    fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio)));
   }
 
-  const ValueTag local{scan.max_step_fraction,
-                       scan.argmax_step >= 0 ? atom->tag[scan.argmax_step] : 0};
-  const ValueTag fastest = max_over_ranks(local, world);
-  values[STEP_FRACTION] = fastest.value;
-  if (fastest.value > move_limit) {
-    // a blown-up run moves disks > 5 % of their radius per step (bench/stability_sweep.md);
-    // a stricter 'move' stops slower ones, which need not be unstable
-    const bool blown_up = fastest.value > BLOW_UP_STEP_FRACTION;
-    char buf[768];
-    snprintf(buf, sizeof(buf),
-             "atom %d moved %.3g of its radius in one step at step " BIGINT_FORMAT
-             " (limit %g; a quasi-static test moves disks < 0.001): %s; %s",
-             fastest.tag, fastest.value, update->ntimestep, move_limit,
-             blown_up ? "the run has gone unstable (kinetic energy blow-up)"
-                      : "faster than 'move' allows (unstable runs move disks > 0.05)",
-             unstable_hint().c_str());
-    error->all(FLERR, msg(buf).c_str());
-  }
-}
-
-// what to change, for the errors of an unstable run (worded only when one is
-// raised): the time step only when it is above the safe 0.15 x sqrt(m_min/k_n)
-std::string FixStabilityGuard::unstable_hint() const
-{
-  const double dt_ratio = values[TIME_STEP_RATIO];
-  char hint[320];
-  if (!(dt_ratio > 0.0))
-    snprintf(hint, sizeof(hint),
-             "reduce the servo gain or the loading rate, or the time step if "
-             "it is above %g x sqrt(m_min/k_n) (not checked: no kn peratomtypepair table)",
-             SAFE_TIME_STEP_RATIO);
-  else if (dt_ratio > SAFE_TIME_STEP_RATIO)
-    snprintf(hint, sizeof(hint),
-             "reduce the time step (now %.3g x sqrt(m_min/k_n); %g is safe), "
-             "the servo gain or the loading rate",
-             dt_ratio, SAFE_TIME_STEP_RATIO);
-  else
-    snprintf(hint, sizeof(hint),
-             "the time step is safe (%.3g x sqrt(m_min/k_n), at most %g): "
-             "reduce the servo gain or the loading rate",
-             dt_ratio, SAFE_TIME_STEP_RATIO);
-  return hint;
+  const ValueTag fastest = max_over_ranks(
+      {scan.max_step_fraction, scan.argmax_step >= 0 ? atom->tag[scan.argmax_step] : 0}, world);
+  const stability::StepVerdict verdict = stability::judge_step_fraction(fastest.value, move_limit);
+  if (verdict != stability::StepVerdict::Within)
+    fail(msg(stability::step_error(fastest.tag, fastest.value, update->ntimestep, move_limit,
+                                   verdict, dt_ratio)));
+  return fastest.value;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -340,114 +308,79 @@ bigint FixStabilityGuard::count_group_atoms()
    fixed boundary silently; a biaxial sample must keep every disk
 ------------------------------------------------------------------------- */
 
-void FixStabilityGuard::check_lost_atoms()
+bigint FixStabilityGuard::check_lost_atoms()
 {
   const bigint lost = natoms0 - count_group_atoms();
-  values[LOST] = static_cast<double>(lost);
-  if (lost > 0)
-    error->all(FLERR,
-               msg(std::to_string(lost) +
-                   " atom(s) of the group were lost since the start of the "
-                   "run (at step " +
-                   std::to_string(update->ntimestep) +
-                   "): disks left the box "
-                   "through a wall or the membrane; check that walls and platens enclose the "
-                   "sample, and " +
-                   unstable_hint())
-                   .c_str());
+  if (lost > 0) fail(msg(stability::lost_error(lost, update->ntimestep, values[TIME_STEP_RATIO])));
+  return lost;
 }
 
 /* ----------------------------------------------------------------------
    disk-disk overlaps over the pair style's neighbour list (current: it is
    rebuilt on reneighbouring and ghosts are updated every step); wall
-   contacts are not in it
+   contacts are not in it. Returns the largest overlap / smaller radius.
 ------------------------------------------------------------------------- */
 
-void FixStabilityGuard::check_overlaps()
+double FixStabilityGuard::check_overlaps()
 {
-  ValueTag local{0.0, 0};
-  int partner = 0;
-  const NeighList *list = force->pair ? force->pair->list : nullptr;
-  if (list) {
-    double **x = atom->x;
-    const double *radius = atom->radius;
-    const int *mask = atom->mask;
-    for (int ii = 0; ii < list->inum; ii++) {
-      const int i = list->ilist[ii];
-      if (!(mask[i] & groupbit)) continue;
-      const int *jlist = list->firstneigh[i];
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
-        const int j = jlist[jj] & NEIGHMASK;
-        if (!(mask[j] & groupbit)) continue;
-        const double frac =
-            stability::overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], radius[i], radius[j]);
-        if (frac > local.value) {
-          local = {frac, atom->tag[i]};
-          partner = atom->tag[j];
-        }
-      }
-    }
-  }
+  stability::OverlapScan scan;
+  if (const NeighList *list = force->pair ? force->pair->list : nullptr)
+    scan = stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
+                                    NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit);
+  const ValueTag local{scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0};
   const ValueTag worst = max_over_ranks(local, world);
-  values[OVERLAP] = worst.value;
-  if (worst.value <= overlap_limit || warned_overlap) return;
+  if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
+
   // the partner lives on the rank that found the maximum (lowest such rank)
+  int partner = scan.j >= 0 ? atom->tag[scan.j] : 0;
   int me_has = local.value == worst.value && local.tag == worst.tag ? comm->me : comm->nprocs;
   MPI_Allreduce(MPI_IN_PLACE, &me_has, 1, MPI_INT, MPI_MIN, world);
   MPI_Bcast(&partner, 1, MPI_INT, me_has, world);
   warned_overlap = true;
-  char buf[512];
-  snprintf(buf, sizeof(buf),
-           "atoms %d and %d overlap by %.3g of the smaller radius at step " BIGINT_FORMAT
-           " (limit %g): contacts this soft change the fabric and the volume; raise the contact "
-           "stiffness (e.g. k_n >= 1000 x the mean stress x unit thickness) or lower the pressure "
-           "(warned once; f_ID[2] is the current value)",
-           std::min(worst.tag, partner), std::max(worst.tag, partner), worst.value,
-           update->ntimestep, overlap_limit);
-  warn(buf);
+  warn(stability::overlap_warning(worst.tag, partner, worst.value, update->ntimestep, overlap_limit,
+                                  OVERLAP + 1));
+  return worst.value;
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   a variable may turn NaN, infinite, negative (R) or non-positive (P)
+   mid-run, and a tiny P makes I overflow: each stops the run. Returns I.
+------------------------------------------------------------------------- */
 
-void FixStabilityGuard::check_inertial_number()
+double FixStabilityGuard::check_inertial_number()
 {
-  // a variable may turn NaN, infinite, negative (R) or non-positive (P) mid-run
   const double rate = rate_in.evaluate(lmp);
-  if (!(std::isfinite(rate) && rate >= 0.0))
-    bad_inertial_value(rate_in, rate, ">= 0 (the strain rate R)");
   const double pressure = pressure_in.evaluate(lmp);
-  if (!(std::isfinite(pressure) && pressure > 0.0))
+  const stability::InertialCheck inertial =
+      stability::check_inertial_number(rate, pressure, d50, density);
+  if (inertial.status == stability::InertialStatus::BadRate)
+    bad_inertial_value(rate_in, rate, ">= 0 (the strain rate R)");
+  if (inertial.status == stability::InertialStatus::BadPressure)
     bad_inertial_value(pressure_in, pressure, "> 0 (the pressure P)");
-  const double inertial = stability::inertial_number(rate, d50, density, pressure);
-  if (!std::isfinite(inertial))
-    error->all(FLERR, keyword_message(PREFIX, "inertial", rate_in.text() + " " + pressure_in.text(),
-                                      "the inertial number overflows at step " +
-                                          std::to_string(update->ntimestep) + " (R = " +
-                                          number_text(rate) + ", P = " + number_text(pressure) +
-                                          "); the pressure is too "
-                                          "small for the rate")
-                          .c_str());
-  values[INERTIAL] = inertial;
-  if (inertial <= inertial_limit || warned_inertial) return;
-  warned_inertial = true;
-  char buf[512];
-  snprintf(
-      buf, sizeof(buf),
-      "inertial number I = %.3g > %g at step " BIGINT_FORMAT " (strain rate %.3g 1/s, d50 %.3g m, "
-      "density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): the test is not quasi-static; "
-      "lower the loading rate (warned once; f_ID[4] is the current value)",
-      inertial, inertial_limit, update->ntimestep, rate, d50, density, pressure);
-  warn(buf);
+  if (inertial.status == stability::InertialStatus::Overflow)
+    fail(keyword_message(PREFIX, "inertial", rate_in.text() + " " + pressure_in.text(),
+                         stability::inertial_overflow(update->ntimestep, rate, pressure)));
+  if (stability::warn_once_now(inertial.value, inertial_limit, warned_inertial)) {
+    warned_inertial = true;
+    warn(stability::inertial_warning(inertial.value, inertial_limit, update->ntimestep, rate, d50,
+                                     density, pressure, INERTIAL + 1));
+  }
+  return inertial.value;
 }
 
 // a variable of 'inertial R P' evaluated to a value it must not have
 void FixStabilityGuard::bad_inertial_value(const ScalarInput &in, double value, const char *must)
 {
-  error->all(FLERR, keyword_message(PREFIX, "inertial", in.text(),
-                                    "is " + number_text(value) + " at step " +
-                                        std::to_string(update->ntimestep) +
-                                        "; it must be a finite number " + must)
-                        .c_str());
+  fail(keyword_message(PREFIX, "inertial", in.text(),
+                       "is " + number_text(value) + " at step " +
+                           std::to_string(update->ntimestep) + "; it must be a finite number " +
+                           must));
+}
+
+// an error raised by every rank (each has taken the same decision)
+void FixStabilityGuard::fail(const std::string &text)
+{
+  error->all(FLERR, text.c_str());
   std::abort(); // Error::all does not return; tells the compiler so
 }
 

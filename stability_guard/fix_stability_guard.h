@@ -1,13 +1,3 @@
-/* ----------------------------------------------------------------------
-   fix stability/guard: watches a 2D granular run every N steps and stops
-   it with an error that says what to change once it has gone unstable
-   (non-finite values, a disk moving a large fraction of its radius per
-   step, lost atoms); warns once each when the time step, the overlaps or
-   the inertial number leave their safe range. See
-   doc/fix_stability_guard.md. Measures in stability_checks.h (no
-   LIGGGHTS); this class gathers them over the ranks and words them.
-------------------------------------------------------------------------- */
-
 #ifdef FIX_CLASS
 
 // clang-format off
@@ -16,17 +6,24 @@ FixStyle(stability/guard,FixStabilityGuard)
 
 #else
 
-#ifndef LMP_FIX_STABILITY_GUARD_H
-#define LMP_FIX_STABILITY_GUARD_H
+#ifndef LIGGGHTS_MEMBRANE_FIX_STABILITY_GUARD_H
+#define LIGGGHTS_MEMBRANE_FIX_STABILITY_GUARD_H
 
 #include <string>
 
 #include "fix.h"
 #include "scalar_input.h"
-#include "style_args.h"
 
 namespace LAMMPS_NS {
 
+// fix stability/guard: watches a 2D granular run every N steps and stops it
+// with an error that says what to change once it has gone unstable (non-finite
+// values, a disk moving a large fraction of its radius per step, lost atoms);
+// warns once each when the time step, the overlaps or the inertial number
+// leave their safe range. See doc/fix_stability_guard.md. The measures and
+// decisions are in stability_checks.h, the wording in stability_messages.h (no
+// LIGGGHTS); this class gathers the atoms and contacts, reduces over the ranks
+// and raises or prints what those return.
 class FixStabilityGuard : public Fix {
  public:
   FixStabilityGuard(class LAMMPS *, int, char **);
@@ -64,15 +61,16 @@ class FixStabilityGuard : public Fix {
   double warned_dt = 0.0; // the time step last warned about
   int warnings;
 
-  void parse_inertial_value(StyleArgs &args, ScalarInput &in, bool positive);
+  // each check returns its measure; the ones that stop the run raise the error
+  void run_checks(bool inertial);
+  double check_atoms();
+  bigint check_lost_atoms();
+  double check_overlaps();
+  double check_inertial_number();
   [[noreturn]] void bad_inertial_value(const ScalarInput &in, double value, const char *must);
-  void check_atoms();
-  void check_lost_atoms();
-  void check_overlaps();
-  void check_inertial_number();
+  [[noreturn]] void fail(const std::string &text);
   bigint count_group_atoms();
   void warn(const std::string &text);
-  std::string unstable_hint() const;
 };
 
 } // namespace LAMMPS_NS

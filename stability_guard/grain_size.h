@@ -1,4 +1,5 @@
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_GRAIN_SIZE_H
+#define LIGGGHTS_MEMBRANE_GRAIN_SIZE_H
 // Grain-size statistics used for the membrane's default band width and gap
 // tolerance (no LIGGGHTS).
 
@@ -11,3 +12,5 @@ namespace stability {
 double d50_by_area(std::vector<double> diameters);
 
 } // namespace stability
+
+#endif

@@ -69,4 +69,44 @@ AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *
   return s;
 }
 
+StepVerdict judge_step_fraction(double fraction, double limit)
+{
+  if (!(fraction > limit)) return StepVerdict::Within;
+  return fraction > STEP_FRACTION_BLOWN_UP ? StepVerdict::BlownUp : StepVerdict::AboveLimit;
+}
+
+OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
+                          const int *const *firstneigh, int neighmask, const double *const *x,
+                          const double *radius, const int *mask, int groupbit)
+{
+  OverlapScan s;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = firstneigh[i][jj] & neighmask;
+      if (!(mask[j] & groupbit)) continue;
+      const double frac =
+          overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], radius[i], radius[j]);
+      if (frac > s.max_fraction) s = {frac, i, j};
+    }
+  }
+  return s;
+}
+
+bool warn_once_now(double value, double limit, bool warned_before)
+{
+  return value > limit && !warned_before;
+}
+
+InertialCheck check_inertial_number(double strain_rate, double pressure, double diameter,
+                                    double density)
+{
+  if (!(std::isfinite(strain_rate) && strain_rate >= 0.0)) return {InertialStatus::BadRate, 0.0};
+  if (!(std::isfinite(pressure) && pressure > 0.0)) return {InertialStatus::BadPressure, 0.0};
+  const double value = inertial_number(strain_rate, diameter, density, pressure);
+  if (!std::isfinite(value)) return {InertialStatus::Overflow, 0.0};
+  return {InertialStatus::Ok, value};
+}
+
 } // namespace stability

@@ -1,8 +1,9 @@
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_STABILITY_CHECKS_H
+#define LIGGGHTS_MEMBRANE_STABILITY_CHECKS_H
 // Numerical-stability measures of an explicit DEM step (no LIGGGHTS), shared by
 // fix stability/guard and fix membrane2d. Each returns a dimensionless number
-// whose safe range is stated where it is defined, so a style only compares and
-// words the message.
+// whose safe range is stated where it is defined, and the decisions taken on
+// them are made here too, so a style only gathers, reduces and reports.
 
 #include <cstddef>
 
@@ -61,4 +62,39 @@ AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *
                     const double *const *f, const double *radius, const int *mask, int groupbit,
                     double dt);
 
+// What the largest |v| dt / r of a check means against the 'move' limit: within
+// it; above it but below STEP_FRACTION_BLOWN_UP (a strict limit stops a run
+// that need not be unstable); above both (the run has blown up).
+enum class StepVerdict { Within, AboveLimit, BlownUp };
+StepVerdict judge_step_fraction(double fraction, double limit);
+
+// The largest disk-disk overlap (overlap_fraction) over a neighbour list as
+// LIGGGHTS keeps it: ilist[0..inum), numneigh[i], firstneigh[i][..] (& neighmask
+// gives the index), both atoms of a pair in the group. Touching pairs only: 0
+// and no pair when no two disks of the group overlap.
+struct OverlapScan {
+  double max_fraction = 0;
+  long i = -1, j = -1; // the pair (i from ilist), -1 if none
+};
+
+OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
+                          const int *const *firstneigh, int neighmask, const double *const *x,
+                          const double *radius, const int *mask, int groupbit);
+
+// Whether a measure that is warned about once is to be warned about now: it
+// exceeds its limit and has not been warned about before.
+bool warn_once_now(double value, double limit, bool warned_before);
+
+// The inertial number of 'inertial R P' once R and P are known: R must be
+// finite and >= 0, P finite and > 0, and I finite (a tiny P makes it overflow).
+enum class InertialStatus { Ok, BadRate, BadPressure, Overflow };
+struct InertialCheck {
+  InertialStatus status;
+  double value; // inertial_number(); 0 unless status is Ok
+};
+InertialCheck check_inertial_number(double strain_rate, double pressure, double diameter,
+                                    double density);
+
 } // namespace stability
+
+#endif

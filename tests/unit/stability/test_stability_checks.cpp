@@ -112,3 +112,116 @@ TEST(ScanAtoms, EmptyGroup)
   EXPECT_EQ(s.argmax_step, -1);
   EXPECT_EQ(s.max_step_fraction, 0.0);
 }
+
+TEST(JudgeStepFraction, AgainstTheLimitAndTheBlowUp)
+{
+  // the default limit is the blow-up fraction 0.05: only a blown-up run is stopped
+  EXPECT_EQ(judge_step_fraction(0.05, 0.05), StepVerdict::Within); // not above: within
+  EXPECT_EQ(judge_step_fraction(0.051, 0.05), StepVerdict::BlownUp);
+  // a stricter limit stops a run that need not be unstable
+  EXPECT_EQ(judge_step_fraction(0.02, 1e-9), StepVerdict::AboveLimit);
+  EXPECT_EQ(judge_step_fraction(0.05, 0.01), StepVerdict::AboveLimit); // 0.05 is not > 0.05
+  EXPECT_EQ(judge_step_fraction(0.1, 0.01), StepVerdict::BlownUp);
+  // a looser limit lets a fast disk through
+  EXPECT_EQ(judge_step_fraction(0.5, 1.0), StepVerdict::Within);
+  EXPECT_EQ(judge_step_fraction(0.0, 0.05), StepVerdict::Within);
+}
+
+namespace {
+
+// disks at x[i] with radii r[i] and a full neighbour list given as pairs
+struct Contacts {
+  Contacts(std::vector<std::array<double, 3>> centres, std::vector<double> radii,
+           std::vector<std::vector<int>> neighbours)
+    : xs(std::move(centres)), r(std::move(radii)), lists(std::move(neighbours)), mask(r.size(), 1)
+  {
+    for (auto &c : xs) x.push_back(c.data());
+    for (std::size_t i = 0; i < lists.size(); i++) {
+      ilist.push_back(static_cast<int>(i));
+      numneigh.push_back(static_cast<int>(lists[i].size()));
+      first.push_back(lists[i].data());
+    }
+  }
+  std::vector<std::array<double, 3>> xs;
+  std::vector<double *> x;
+  std::vector<double> r;
+  std::vector<std::vector<int>> lists;
+  std::vector<int> mask, ilist, numneigh;
+  std::vector<int *> first;
+  OverlapScan scan(int neighmask = ~0) const
+  {
+    return scan_overlaps(static_cast<int>(ilist.size()), ilist.data(), numneigh.data(),
+                         first.data(), neighmask, x.data(), r.data(), mask.data(), 1);
+  }
+};
+
+} // namespace
+
+TEST(ScanOverlaps, LargestOverlapOfTheGroup)
+{
+  // radius 1 mm each; 0-1 at 1.9 mm: (2 - 1.9) / 1 = 0.1; 1-2 at 1.7 mm: 0.3; 2-3 apart (2.5 mm)
+  Contacts c({{0, 0, 0}, {1.9e-3, 0, 0}, {3.6e-3, 0, 0}, {6.1e-3, 0, 0}}, {1e-3, 1e-3, 1e-3, 1e-3},
+             {{1}, {2}, {3}, {}});
+  OverlapScan s = c.scan();
+  EXPECT_NEAR(s.max_fraction, 0.3, 1e-12);
+  EXPECT_EQ(s.i, 1);
+  EXPECT_EQ(s.j, 2);
+  // atom 2 outside the group: the 0-1 pair is the largest left
+  c.mask[2] = 2;
+  s = c.scan();
+  EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
+  EXPECT_EQ(s.i, 0);
+  EXPECT_EQ(s.j, 1);
+}
+
+TEST(ScanOverlaps, NeighbourMaskAndNoContact)
+{
+  // special-bond bits above the mask are stripped: 1 | (1 << 30) is neighbour 1;
+  // radii 1 and 0.5 mm 1.4 mm apart: 0.1 mm / 0.5 mm = 0.2
+  Contacts c({{0, 0, 0}, {1.4e-3, 0, 0}}, {1e-3, 0.5e-3}, {{1 | (1 << 30)}, {}});
+  OverlapScan s = c.scan(0x3FFFFFFF);
+  EXPECT_NEAR(s.max_fraction, 0.2, 1e-12);
+  EXPECT_EQ(s.i, 0);
+  EXPECT_EQ(s.j, 1);
+  // 1.6 mm apart, a gap of 0.1 mm: no overlap, nothing found
+  c.xs[1][0] = 1.6e-3;
+  s = c.scan(0x3FFFFFFF);
+  EXPECT_EQ(s.max_fraction, 0.0);
+  EXPECT_EQ(s.i, -1);
+  EXPECT_EQ(s.j, -1);
+}
+
+TEST(WarnOnceNow, AboveTheLimitTheFirstTime)
+{
+  EXPECT_TRUE(warn_once_now(0.2, 0.1, false));
+  EXPECT_FALSE(warn_once_now(0.2, 0.1, true));  // warned before
+  EXPECT_FALSE(warn_once_now(0.1, 0.1, false)); // at the limit is within
+  EXPECT_FALSE(warn_once_now(0.05, 0.1, false));
+  EXPECT_FALSE(warn_once_now(std::numeric_limits<double>::quiet_NaN(), 0.1, false));
+}
+
+TEST(CheckInertialNumber, ValidInputsGiveTheNumber)
+{
+  // as InertialNumber.HandWorked: 0.01 /s, 1.75 mm, 2e8, 1e5 Pa -> 7.82624e-4
+  const InertialCheck c = check_inertial_number(0.01, 1e5, 1.75e-3, 2e8);
+  EXPECT_EQ(c.status, InertialStatus::Ok);
+  EXPECT_NEAR(c.value, 7.82624e-4, 1e-9);
+  EXPECT_EQ(check_inertial_number(0.0, 1e5, 1.75e-3, 2e8).status, InertialStatus::Ok);
+  EXPECT_EQ(check_inertial_number(0.0, 1e5, 1.75e-3, 2e8).value, 0.0);
+}
+
+TEST(CheckInertialNumber, WhatIsWrongWithRAndP)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double rate : {-0.01, nan, inf, -inf})
+    EXPECT_EQ(check_inertial_number(rate, 1e5, 1e-3, 2e8).status, InertialStatus::BadRate);
+  for (double pressure : {0.0, -1e5, nan, inf, -inf})
+    EXPECT_EQ(check_inertial_number(0.01, pressure, 1e-3, 2e8).status, InertialStatus::BadPressure);
+  // the rate is judged first
+  EXPECT_EQ(check_inertial_number(-1.0, 0.0, 1e-3, 2e8).status, InertialStatus::BadRate);
+  // R = 1, P = 1e-300: 1 * 1e-3 * sqrt(2e8 / 1e-300) = sqrt(2e308) overflows
+  const InertialCheck c = check_inertial_number(1.0, 1e-300, 1e-3, 2e8);
+  EXPECT_EQ(c.status, InertialStatus::Overflow);
+  EXPECT_EQ(c.value, 0.0);
+}

@@ -1,0 +1,122 @@
+#include "stability_messages.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace stability {
+
+namespace {
+
+// printf into a string: the texts are short, but one with long numbers must
+// not be cut
+std::string format(const char *fmt, ...)
+{
+  va_list args, again;
+  va_start(args, fmt);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, fmt, args);
+  va_end(args);
+  std::string text(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(&text[0], text.size() + 1, fmt, again);
+  va_end(again);
+  return text;
+}
+
+} // namespace
+
+std::string time_step_warning(double dt, double mass_min, double stiffness_max, double limit)
+{
+  const double ratio = time_step_ratio(dt, mass_min, stiffness_max);
+  const double fraction = limit < TIME_STEP_SAFE ? limit : TIME_STEP_SAFE;
+  const double suggested = safe_time_step(fraction, mass_min, stiffness_max);
+  const char *published = fraction == TIME_STEP_SAFE ? ", the published set-up" : "";
+  const std::string what =
+      format("time step %g s is %.2g x sqrt(m_min/k_n) = %.3g s (m_min = %.3g "
+             "kg, k_n = %.3g N/m), above the limit %g",
+             dt, ratio, contact_time(mass_min, stiffness_max), mass_min, stiffness_max, limit);
+  if (ratio > TIME_STEP_POORLY_RESOLVED)
+    return what + format("; above %g the contacts are poorly resolved and the run may go "
+                         "unstable: reduce it, use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)",
+                         TIME_STEP_POORLY_RESOLVED, suggested, fraction, published);
+  if (ratio > TIME_STEP_SAFE)
+    return what + format(": use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)", suggested, fraction,
+                         published);
+  return what + format("; it is within %g x sqrt(m_min/k_n), the published set-up, which is "
+                       "safe: keep it, or use timestep <= %.2g only to stay below the limit",
+                       TIME_STEP_SAFE, suggested);
+}
+
+std::string unstable_hint(double time_step_ratio)
+{
+  if (!(time_step_ratio > 0.0))
+    return format("reduce the servo gain or the loading rate, or the time step if it is above "
+                  "%g x sqrt(m_min/k_n) (not checked: no kn peratomtypepair table)",
+                  TIME_STEP_SAFE);
+  if (time_step_ratio > TIME_STEP_SAFE)
+    return format("reduce the time step (now %.3g x sqrt(m_min/k_n); %g is safe), the servo gain "
+                  "or the loading rate",
+                  time_step_ratio, TIME_STEP_SAFE);
+  return format("the time step is safe (%.3g x sqrt(m_min/k_n), at most %g): reduce the servo "
+                "gain or the loading rate",
+                time_step_ratio, TIME_STEP_SAFE);
+}
+
+std::string nonfinite_error(long count, long long step, int first, double time_step_ratio)
+{
+  return format("%ld atom(s) have a non-finite position, velocity or force at step %lld (first: "
+                "atom %d): the run has gone unstable; ",
+                count, step, first) +
+         unstable_hint(time_step_ratio);
+}
+
+std::string step_error(int tag, double fraction, long long step, double limit, StepVerdict verdict,
+                       double time_step_ratio)
+{
+  const std::string what = verdict == StepVerdict::BlownUp
+                               ? std::string("the run has gone unstable (kinetic energy blow-up)")
+                               : format("faster than 'move' allows (unstable runs move disks > %g)",
+                                        STEP_FRACTION_BLOWN_UP);
+  return format("atom %d moved %.3g of its radius in one step at step %lld (limit %g; a "
+                "quasi-static test moves disks < %g): ",
+                tag, fraction, step, limit, STEP_FRACTION_QUASI_STATIC) +
+         what + "; " + unstable_hint(time_step_ratio);
+}
+
+std::string lost_error(long long lost, long long step, double time_step_ratio)
+{
+  return format("%lld atom(s) of the group were lost since the start of the run (at step %lld): "
+                "disks left the box through a wall or the membrane; check that walls and "
+                "platens enclose the sample, and ",
+                lost, step) +
+         unstable_hint(time_step_ratio);
+}
+
+std::string overlap_warning(int tag_a, int tag_b, double fraction, long long step, double limit,
+                            int vector_entry)
+{
+  return format("atoms %d and %d overlap by %.3g of the smaller radius at step %lld (limit %g): "
+                "contacts this soft change the fabric and the volume; raise the contact "
+                "stiffness (e.g. k_n >= 1000 x the mean stress x unit thickness) or lower the "
+                "pressure (warned once; f_ID[%d] is the current value)",
+                tag_a < tag_b ? tag_a : tag_b, tag_a < tag_b ? tag_b : tag_a, fraction, step, limit,
+                vector_entry);
+}
+
+std::string inertial_warning(double inertial, double limit, long long step, double strain_rate,
+                             double d50, double density, double pressure, int vector_entry)
+{
+  return format("inertial number I = %.3g > %g at step %lld (strain rate %.3g 1/s, d50 %.3g m, "
+                "density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): the test is not "
+                "quasi-static; lower the loading rate (warned once; f_ID[%d] is the current "
+                "value)",
+                inertial, limit, step, strain_rate, d50, density, pressure, vector_entry);
+}
+
+std::string inertial_overflow(long long step, double strain_rate, double pressure)
+{
+  return format("the inertial number overflows at step %lld (R = %g, P = %g); the pressure is "
+                "too small for the rate",
+                step, strain_rate, pressure);
+}
+
+} // namespace stability

@@ -1,0 +1,54 @@
+#ifndef LIGGGHTS_MEMBRANE_GUARD_MESSAGES_H
+#define LIGGGHTS_MEMBRANE_GUARD_MESSAGES_H
+// The wording of the stability errors and warnings that depends on numbers
+// only (no LIGGGHTS), without the style's prefix: the time-step warning of
+// fix stability/guard and fix membrane2d, and the other messages of fix
+// stability/guard. The limits they quote are those of stability_checks.h, so a
+// change there changes every message. Steps and atom IDs are LIGGGHTS' bigint
+// and tagint.
+
+#include <string>
+
+#include "stability_checks.h"
+
+namespace stability {
+
+// dt exceeds `limit` x contact_time(mass_min, stiffness_max): what the step is,
+// and what to use, worded by how large it is: above TIME_STEP_POORLY_RESOLVED
+// the run may go unstable; the step to use is min(limit, TIME_STEP_SAFE) x the
+// contact time; within TIME_STEP_SAFE it is called safe (only a stricter limit
+// is exceeded).
+std::string time_step_warning(double dt, double mass_min, double stiffness_max, double limit);
+
+// What to change, closing the errors of an unstable run: the time step only
+// when dt / sqrt(m_min/k_n) = `time_step_ratio` is above TIME_STEP_SAFE; all
+// three when the ratio is unknown (0: no linear stiffness table).
+std::string unstable_hint(double time_step_ratio);
+
+// `count` atoms have a non-finite x, v or f, the first of them atom `first`.
+std::string nonfinite_error(long count, long long step, int first, double time_step_ratio);
+
+// Atom `tag` moved `fraction` of its radius in one step, above the 'move' limit
+// (`verdict` is judge_step_fraction(fraction, limit), not Within).
+std::string step_error(int tag, double fraction, long long step, double limit, StepVerdict verdict,
+                       double time_step_ratio);
+
+// `lost` atoms of the group have gone since the start of the run.
+std::string lost_error(long long lost, long long step, double time_step_ratio);
+
+// Atoms `tag_a` and `tag_b` overlap by `fraction` of the smaller radius;
+// `vector_entry` is the fix's output f_ID[k] that holds the current value.
+std::string overlap_warning(int tag_a, int tag_b, double fraction, long long step, double limit,
+                            int vector_entry);
+
+// The inertial number `inertial` of strain rate, D50, density and pressure is
+// above `limit`; `vector_entry` as for overlap_warning.
+std::string inertial_warning(double inertial, double limit, long long step, double strain_rate,
+                             double d50, double density, double pressure, int vector_entry);
+
+// What is wrong when R and P are valid but I overflows (InertialStatus::Overflow).
+std::string inertial_overflow(long long step, double strain_rate, double pressure);
+
+} // namespace stability
+
+#endif
