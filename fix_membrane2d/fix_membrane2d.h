@@ -16,8 +16,8 @@ FixStyle(membrane2d,FixMembrane2d)
 
 #else
 
-#ifndef LMP_FIX_MEMBRANE2D_H
-#define LMP_FIX_MEMBRANE2D_H
+#ifndef LIGGGHTS_MEMBRANE_FIX_MEMBRANE2D_H
+#define LIGGGHTS_MEMBRANE_FIX_MEMBRANE2D_H
 
 #include <cstdio>
 #include <string>
