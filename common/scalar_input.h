@@ -26,6 +26,7 @@ class ScalarInput {
   // a variable's sign is checked when it is evaluated (evaluate_checked)
   void read(StyleArgs &args, Sign sign, const std::string &usage)
   {
+    *this = ScalarInput(); // a repeated keyword takes its last value
     const std::string text = args.value(usage);
     if (text.compare(0, 2, "v_") == 0) {
       if (text.size() == 2) args.bad("names no variable", usage);

@@ -98,7 +98,7 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
       const char *value = args.value(USE_EVERY);
       definition.detect_every =
           strcmp(value, "auto") == 0
-              ? 0
+              ? DETECT_AUTO
               : static_cast<int>(args.to_integer(value, 1, 1000000000L, USE_EVERY));
     } else if (key == "frictionless") {
       definition.frictionless_type =
@@ -230,7 +230,7 @@ void FixMembrane2d::pre_force(int)
 {
   evaluate_platens();
   const int every = definition.detect_every;
-  bool detect = run.force_detection || (every > 0 && update->ntimestep % every == 0);
+  bool detect = run.force_detection || (!detect_auto() && update->ntimestep % every == 0);
   if (!detect) {
     gather_watched();
     detect =

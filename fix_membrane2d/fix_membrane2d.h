@@ -71,7 +71,7 @@ class FixMembrane2d : public Fix {
  private:
   ScalarInput pressure_in, ylo_in, yhi_in; // numbers or v_name
   membrane::Definition definition;         // as given (band/tolerance -1: default)
-  bool detect_auto() const { return definition.detect_every == 0; }
+  bool detect_auto() const { return definition.detect_every == membrane::DETECT_AUTO; }
   bigint polyline_every;
   MembranePolylineFile polyline;
   MembraneGather gather;

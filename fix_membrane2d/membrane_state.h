@@ -132,11 +132,14 @@ struct SideLoad {
 void load_side(const std::vector<Disk> &chain, Side side, Platens platens, double pressure,
                double thickness, SideLoad &out);
 
+// every auto: detect when the chain can have changed (detection_needed)
+constexpr int DETECT_AUTO = 0;
+
 // How the fix was defined: a restart is used only by the same definition.
 struct Definition {
   int sides_mask = 3; // 1 left, 2 right
   int frictionless_type = 0;
-  int detect_every = 0;
+  int detect_every = DETECT_AUTO; // steps between detections, or DETECT_AUTO
   double band_given = -1.0, tolerance_given = -1.0, thickness = 1.0;
   bool operator==(const Definition &o) const
   {
