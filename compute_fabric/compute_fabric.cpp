@@ -7,17 +7,12 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <string>
 
 #include "atom.h"
 #include "comm.h"
-#include "compute_pair_gran_local.h"
 #include "domain.h"
 #include "error.h"
-#include "force.h"
-#include "group.h"
 #include "input.h"
 #include "memory.h"
 #include "modify.h"
@@ -25,9 +20,8 @@
 #include "update.h"
 #include "variable.h"
 
-#include "allgather.h"
-#include "style_args.h"
 #include "stability_index.h"
+#include "style_args.h"
 
 using namespace LAMMPS_NS;
 
@@ -35,39 +29,8 @@ namespace {
 
 constexpr double RAD2DEG = 180.0 / M_PI;
 
-// One contact as exchanged between ranks: tags, centres, force on atom a,
-// radius sum (wall: a's radius).
-enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, RADSUM, CONTACT_FIELDS };
-
 // every message starts so (doc/messages.md, common/style_args.h)
 const char *const PREFIX = "Compute fabric: ";
-const char *const KEYWORDS =
-    "bins, estimator, stability, rattlers, histogram, stress, region, walls";
-const char *const USE_BINS =
-    "bins N, the number of angular bins over 360 deg, an even integer from 6 to 3600 (default 18)";
-const char *const USE_ESTIMATOR = "estimator unbiased, published or tensor (default unbiased)";
-const char *const USE_STABILITY =
-    "stability yes or no, the mean stability index as vector entry 13 (default no)";
-const char *const USE_RATTLERS =
-    "rattlers yes or no, particles with 0 or 1 contact in the mean stability index (default no)";
-const char *const USE_HISTOGRAM =
-    "histogram yes or no, the polar histogram as a global array (default no)";
-const char *const USE_WALLS =
-    "walls yes or no, also count the contacts with the mesh walls of fix wall/gran (default no)";
-const char *const USE_STRESS =
-    "stress A or v_name, the sample area (length^2 per unit thickness) of the Love-Weber stress";
-const char *const USE_UPDATE =
-    "update_on_run_end yes or no, invoke the compute at the end of each run (default no)";
-const char *const USE_REGION = "region ID, count only the particles whose centre is inside region "
-                               "ID (a region defined before compute fabric)";
-
-bool yes_no(StyleArgs &args, const char *usage)
-{
-  const std::string value = args.value(usage);
-  if (value == "yes") return true;
-  if (value != "no") args.bad("must be yes or no", usage);
-  return false;
-}
 
 std::string msg(const std::string &text)
 {
@@ -79,10 +42,10 @@ std::string msg(const std::string &text)
 /* ---------------------------------------------------------------------- */
 
 ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
-  : Compute(lammps, iarg, narg, arg), nbins(18), estimator(Estimator::Unbiased),
+  : Compute(lammps, iarg, narg, arg), nbins(18), estimator(fabric::Estimator::Unbiased),
     stability_flag(false), rattlers_flag(false), histogram_flag(false), stress_flag(false),
-    area_ivar(-1), iregion(-1), walls_flag(false), gathered_step(-1), nparticles(0), no_normal(0),
-    first_no_normal(0), warned_no_normal(false), nmax_atom(0)
+    walls_flag(false), area_ivar(-1), iregion(-1), contact_gather(lammps, this),
+    warned_no_normal(false), nmax_atom(0)
 {
   if (domain->dimension != 2)
     error->all(
@@ -124,7 +87,9 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
   size_peratom_cols = 2;
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   each keyword's usage ends its messages; doc/compute_fabric.md lists them
+------------------------------------------------------------------------- */
 
 void ComputeFabric::parse_args(int iarg, int narg, char **arg)
 {
@@ -132,52 +97,52 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
   while (args.more()) {
     const std::string key = args.keyword();
     if (key == "bins") {
-      const long n = args.integer(LONG_MIN, LONG_MAX, USE_BINS);
+      const char *usage = "bins N, the number of angular bins over 360 deg, an even integer "
+                          "from 6 to 3600 (default 18)";
+      const long n = args.integer(LONG_MIN, LONG_MAX, usage);
+      // even: the rose is point-symmetric, so a bin and its opposite match
       if (n < 6 || n > 3600 || n % 2 != 0)
-        args.bad("must be an even integer from 6 to 3600", USE_BINS);
+        args.bad("must be an even integer from 6 to 3600", usage);
       nbins = static_cast<int>(n);
     } else if (key == "estimator") {
-      const std::string value = args.value(USE_ESTIMATOR);
-      if (value == "unbiased")
-        estimator = Estimator::Unbiased;
-      else if (value == "published")
-        estimator = Estimator::Published;
-      else if (value == "tensor")
-        estimator = Estimator::Tensor;
-      else
-        args.bad("must be unbiased, published or tensor", USE_ESTIMATOR);
+      // in the order of the names below
+      const fabric::Estimator named[] = {fabric::Estimator::Unbiased, fabric::Estimator::Published,
+                                         fabric::Estimator::Tensor};
+      estimator = named[args.choice({"unbiased", "published", "tensor"},
+                                    "estimator unbiased, published or tensor (default unbiased)")];
     } else if (key == "stability") {
-      stability_flag = yes_no(args, USE_STABILITY);
+      stability_flag = args.yes_no(
+          "stability yes or no, the mean stability index as vector entry 13 (default no)");
     } else if (key == "rattlers") {
-      rattlers_flag = yes_no(args, USE_RATTLERS);
+      rattlers_flag = args.yes_no("rattlers yes or no, particles with 0 or 1 contact in the mean "
+                                  "stability index (default no)");
     } else if (key == "histogram") {
-      histogram_flag = yes_no(args, USE_HISTOGRAM);
-    } else if (key == "walls") {
-      walls_flag = yes_no(args, USE_WALLS);
+      histogram_flag =
+          args.yes_no("histogram yes or no, the polar histogram as a global array (default no)");
     } else if (key == "stress") {
-      const char *value = args.value(USE_STRESS);
-      if (strncmp(value, "v_", 2) == 0) {
-        if (value[2] == '\0') args.bad("names no variable", USE_STRESS);
-      } else {
-        char *end = nullptr;
-        const double area = strtod(value, &end);
-        if (*value == '\0' || *end != '\0') args.bad("is neither a number nor v_name", USE_STRESS);
-        if (!(std::isfinite(area) && area > 0.0))
-          args.bad("must be a positive number (the sample area)", USE_STRESS);
-      }
-      area_in.parse(lmp, PREFIX, "stress", value);
+      area_in = ScalarInput(); // a repeated stress: v_name then A must forget the name
+      area_in.read(args, ScalarInput::Sign::Positive,
+                   "stress A or v_name, the sample area (length^2 per unit thickness) of the "
+                   "Love-Weber stress");
       stress_flag = true;
     } else if (key == "region") {
-      idregion = args.value(USE_REGION);
+      const char *usage = "region ID, count only the particles whose centre is inside region ID "
+                          "(a region defined before compute fabric)";
+      idregion = args.value(usage);
       if (domain->find_region(const_cast<char *>(idregion.c_str())) < 0)
-        args.bad("there is no region " + idregion, USE_REGION);
+        args.bad("there is no region " + idregion, usage);
+    } else if (key == "walls") {
+      walls_flag = args.yes_no("walls yes or no, also count the contacts with the mesh walls of "
+                               "fix wall/gran (default no)");
     } else if (key == "update_on_run_end") {
       // LIGGGHTS' Compute reads it for every compute, only right after the style
-      args.value(USE_UPDATE);
+      const char *usage =
+          "update_on_run_end yes or no, invoke the compute at the end of each run (default no)";
+      args.value(usage);
       args.bad("must come first, right after fabric (LIGGGHTS reads it there for every compute)",
-               USE_UPDATE);
+               usage);
     } else {
-      args.unknown(KEYWORDS);
+      args.unknown("bins, estimator, stability, rattlers, histogram, stress, region, walls");
     }
   }
   if (rattlers_flag && !stability_flag && comm->me == 0)
@@ -195,109 +160,13 @@ ComputeFabric::~ComputeFabric()
   memory->destroy(vector);
   memory->destroy(array);
   memory->destroy(array_atom);
-  delete[] pairs.id;
-  delete[] walls.id;
-}
-
-/* ----------------------------------------------------------------------
-   Contact forces come from LIGGGHTS' own compute pair/gran/local: the pair
-   style evaluates its contact model again at the current positions with the
-   stored contact history (not updated), so these are the forces the pair
-   applied this step. A pair style accepts only one such compute, so every
-   compute fabric reads the same one: one the user defined (before or after
-   this compute), else ours, created at the first init (when every compute
-   of the input script exists) in group all, because pack_contacts keeps
-   only the contacts of this compute's group anyway.
-------------------------------------------------------------------------- */
-
-void ComputeFabric::find_source(ContactSource &src)
-{
-  src.compute = nullptr;
-  for (int i = 0; i < modify->ncompute; i++) {
-    Compute *c = modify->compute[i];
-    if (c == this || strcmp(c->style, src.style) != 0) continue;
-    if (src.id && strcmp(c->id, src.id) != 0) continue;
-    const std::string named = std::string("compute ") + c->id + " (" + src.style + ", group " +
-                              group->names[c->igroup] + ")";
-    ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
-    if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
-      error->all(FLERR, msg(named + " lacks the values pos, id or force that compute " + id +
-                            " (fabric) reads from it; define it as compute " + c->id + " " +
-                            group->names[c->igroup] + " " + src.style + " pos id force")
-                            .c_str());
-    if (c->igroup != 0 && c->igroup != igroup)
-      error->all(FLERR, msg("compute " + std::string(id) + " (fabric, group " +
-                            group->names[igroup] + ") reads the contacts from " + named +
-                            ", which leaves out the contacts "
-                            "outside group " +
-                            group->names[c->igroup] + "; define compute " + c->id +
-                            " in group all: a pair style takes one compute " + src.style +
-                            " and every compute fabric reads it")
-                            .c_str());
-    src.compute = found;
-    if (!src.id) {
-      src.id = new char[strlen(c->id) + 1];
-      strcpy(src.id, c->id);
-    }
-    return;
-  }
-}
-
-void ComputeFabric::create_source(ContactSource &src, const char *suffix)
-{
-  std::string cid = std::string(id) + suffix;
-  delete[] src.id;
-  src.id = new char[cid.size() + 1];
-  strcpy(src.id, cid.c_str());
-
-  char *args[6];
-  args[0] = src.id;
-  args[1] = (char *)"all";
-  args[2] = const_cast<char *>(src.style);
-  args[3] = (char *)"pos";
-  args[4] = (char *)"id";
-  args[5] = (char *)"force";
-  // pair/gran/local refuses to be created after a run ("define this compute
-  // before first run"), which includes any script that starts with read_restart.
-  // The check protects its optional 'history' columns, whose layout is fixed when
-  // the pair style first runs; we ask for pos, id and force only, which the pair
-  // reports at any time, so we create it as if at step 0.
-  const bigint now = update->ntimestep;
-  update->ntimestep = 0;
-  modify->add_compute(6, args);
-  update->ntimestep = now;
-  src.compute = static_cast<ComputePairGranLocal *>(modify->compute[modify->ncompute - 1]);
-}
-
-void ComputeFabric::init_source(ContactSource &src, const char *suffix)
-{
-  find_source(src);
-  if (!src.compute && src.id) {
-    // deleted (uncompute) since the last run: read another one, or ours
-    delete[] src.id;
-    src.id = nullptr;
-    find_source(src);
-  }
-  if (!src.compute) create_source(src, suffix);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void ComputeFabric::init()
 {
-  init_source(pairs, "_contacts");
-  if (walls_flag) {
-    // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
-    // wall is recognised by the mesh fixes it needs)
-    if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
-      error->all(FLERR,
-                 keyword_message(PREFIX, "walls", "yes",
-                                 "needs a fix wall/gran with mesh walls (LIGGGHTS reports no "
-                                 "contact forces for primitive walls); use mesh walls (fix "
-                                 "mesh/surface and fix wall/gran ... mesh) or walls no")
-                     .c_str());
-    init_source(walls, "_walls");
-  }
+  contact_gather.init(walls_flag);
 
   if (!idregion.empty()) {
     iregion = domain->find_region(const_cast<char *>(idregion.c_str()));
@@ -314,134 +183,30 @@ void ComputeFabric::init()
     if (area_in.is_variable())
       area_ivar = input->variable->find(const_cast<char *>(area_in.text().substr(2).c_str()));
   }
-  gathered_step = -1;
+  current.step = -1;
 }
 
 /* ---------------------------------------------------------------------- */
 
-bool ComputeFabric::atom_selected(int i) const
+Region *ComputeFabric::region() const
 {
-  if (!(atom->mask[i] & groupbit)) return false;
-  if (iregion < 0) return true;
-  double **x = atom->x;
-  return domain->regions[iregion]->match(x[i][0], x[i][1], x[i][2]) != 0;
+  return iregion >= 0 ? domain->regions[iregion] : nullptr;
 }
 
 /* ----------------------------------------------------------------------
-   one record per contact: tags (b = -1 for a wall), centres (for a wall,
-   b's position is the contact point), force on a
+   the contacts are gathered (all ranks take part) once per timestep
 ------------------------------------------------------------------------- */
 
-void ComputeFabric::pack_contacts(const ContactSource &src, bool wall)
+const ComputeFabric::StepContacts &ComputeFabric::contacts_now()
 {
-  ComputePairGranLocal *c = src.compute;
-  const int nrows = c->size_local_rows;
-  double **rows = c->get_data();
-  const int ox = c->offset_x1(), oid = c->offset_id1(), of = c->offset_f();
-  Region *region = iregion >= 0 ? domain->regions[iregion] : nullptr;
-
-  for (int r = 0; r < nrows; r++) {
-    const double *row = rows[r];
-    double rec[CONTACT_FIELDS];
-    if (wall) {
-      // wall/gran/local: pos = contact point, particle centre; id = mesh, triangle, tag
-      const double *cp = row + ox, *xp = row + ox + 3;
-      const int ip = atom->map(static_cast<int>(row[oid + 2]));
-      if (ip < 0 || !(atom->mask[ip] & groupbit)) continue;
-      if (region && !region->match(xp[0], xp[1], xp[2])) continue;
-      const double w[CONTACT_FIELDS] = {row[oid + 2], -1.0,    xp[0],       xp[1],           cp[0],
-                                        cp[1],        row[of], row[of + 1], atom->radius[ip]};
-      std::copy(w, w + CONTACT_FIELDS, rec);
-    } else {
-      const double *xa = row + ox, *xb = row + ox + 3;
-      // a pair/gran/local of group all (the user's) reports contacts outside our group
-      const int ia = atom->map(static_cast<int>(row[oid]));
-      const int ib = atom->map(static_cast<int>(row[oid + 1]));
-      if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit))
-        continue;
-      if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
-        continue;
-      const double p[CONTACT_FIELDS] = {
-          row[oid], row[oid + 1], xa[0],
-          xa[1],    xb[0],        xb[1],
-          row[of],  row[of + 1],  atom->radius[ia] + atom->radius[ib]};
-      std::copy(p, p + CONTACT_FIELDS, rec);
-      if (rec[TAG_A] > rec[TAG_B]) {
-        // make a the smaller tag; the force on the new a is minus the old one
-        std::swap(rec[TAG_A], rec[TAG_B]);
-        std::swap(rec[XA], rec[XB]);
-        std::swap(rec[YA], rec[YB]);
-        rec[FAX] = -rec[FAX];
-        rec[FAY] = -rec[FAY];
-      }
-    }
-    sendbuf.insert(sendbuf.end(), rec, rec + CONTACT_FIELDS);
-  }
-}
-
-/* ----------------------------------------------------------------------
-   Every rank ends with the same contact list, sorted by (tag a, tag b) with
-   tag a < tag b, so every statistic is summed in the same order whatever the
-   number of ranks. pair/gran/local already reports a contact across a
-   processor boundary on one rank only (newton off: the smaller tag's side).
-------------------------------------------------------------------------- */
-
-void ComputeFabric::gather_contacts()
-{
-  if (gathered_step == update->ntimestep) return;
-  gathered_step = update->ntimestep;
-
-  // Ghost velocities date from the start of the step; the contact model's
-  // damping terms need the current ones, or a contact across a processor
-  // boundary would differ from the same contact inside one rank.
-  bool refreshed = false;
-  sendbuf.clear();
-  for (ContactSource *src : {&pairs, &walls}) {
-    if (!src->compute) continue;
-    if (src->compute->invoked_local != update->ntimestep) {
-      if (!refreshed) comm->forward_comm();
-      refreshed = true;
-      src->compute->compute_local();
-    }
-    pack_contacts(*src, src == &walls);
-  }
-
-  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
-
-  const int ncontacts = static_cast<int>(recvbuf.size()) / CONTACT_FIELDS;
-  // one 64-bit key per contact sorts faster than comparing doubles
-  sort_keys.resize(ncontacts);
-  const double *buf = recvbuf.data();
-  for (int c = 0; c < ncontacts; c++) {
-    const double *rec = buf + c * CONTACT_FIELDS;
-    // a wall (tag -1) sorts after the particles a touches
-    const uint64_t low = static_cast<uint32_t>(static_cast<int64_t>(rec[TAG_B]));
-    const uint64_t key = (static_cast<uint64_t>(rec[TAG_A]) << 32) | low;
-    sort_keys[c] = {key, c};
-  }
-  std::sort(sort_keys.begin(), sort_keys.end());
-
-  contact_list.resize(ncontacts);
-  no_normal = 0;
-  for (int c = 0; c < ncontacts; c++) {
-    const double *rec = buf + sort_keys[c].second * CONTACT_FIELDS;
-    // positions are remapped into the box: undo a periodic wrap
-    double lx = rec[XB] - rec[XA], ly = rec[YB] - rec[YA], dz = 0.0;
-    domain->minimum_image(lx, ly, dz);
-    // force on b from a is minus the force on a from b
-    fabric::Contact &k = contact_list[c];
-    k = fabric::make_contact(static_cast<long>(rec[TAG_A]), static_cast<long>(rec[TAG_B]), lx, ly,
-                             -rec[FAX], -rec[FAY], rec[RADSUM]);
-    if (!fabric::has_normal(k) && no_normal++ == 0) first_no_normal = c;
-  }
-  if (no_normal > 0) warn_no_normal();
-
-  index_contact_ends();
-
-  long nlocal_selected = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom_selected(i)) nlocal_selected++;
-  MPI_Allreduce(&nlocal_selected, &nparticles, 1, MPI_LONG, MPI_SUM, world);
+  if (current.step == update->ntimestep) return current;
+  current.step = update->ntimestep;
+  current.contacts = contact_gather.gather(region());
+  current.no_normal = fabric::missing_normals(current.contacts);
+  if (current.no_normal.count > 0) warn_no_normal(current);
+  current.particles = fabric::particle_contacts(current.contacts);
+  current.nparticles = contact_gather.count_particles(region());
+  return current;
 }
 
 /* ----------------------------------------------------------------------
@@ -449,17 +214,17 @@ void ComputeFabric::gather_contacts()
    by rank 0, from the contact list every rank holds
 ------------------------------------------------------------------------- */
 
-void ComputeFabric::warn_no_normal()
+void ComputeFabric::warn_no_normal(const StepContacts &step)
 {
   if (warned_no_normal) return;
   warned_no_normal = true;
   if (comm->me != 0) return;
-  const fabric::Contact &k = contact_list[first_no_normal];
+  const fabric::Contact &k = step.contacts[step.no_normal.first];
   const std::string pair = k.b >= 0 ? "atoms " + std::to_string(k.a) + " and " + std::to_string(k.b)
                                     : "atom " + std::to_string(k.a) + " and a mesh wall";
   const std::string text = msg(
-      std::to_string(no_normal) + " contact(s) with coincident centres (" + pair + ", distance " +
-      number_text(std::hypot(k.lx, k.ly)) +
+      std::to_string(step.no_normal.count) + " contact(s) with coincident centres (" + pair +
+      ", distance " + number_text(std::hypot(k.lx, k.ly)) +
       ") have no normal; left out "
       "of the fabric and force directions, the stress and the stability index, still counted in "
       "N_c, C_n and Z_m (c_" +
@@ -467,51 +232,6 @@ void ComputeFabric::warn_no_normal()
       "[17] is their number); were two atoms created "
       "at one point? (warned once)");
   error->warning(FLERR, text.c_str());
-}
-
-/* ----------------------------------------------------------------------
-   the contact angles about each particle, grouped by tag: a stable sort of
-   the contact ends, so that time and memory follow the number of contacts,
-   not the largest atom ID (IDs may be sparse up to 2^31 with map hash)
-------------------------------------------------------------------------- */
-
-void ComputeFabric::index_contact_ends()
-{
-  ends.clear();
-  for (const fabric::Contact &k : contact_list) {
-    // a contact without a normal counts for both particles but has no angle
-    const double theta = fabric::has_normal(k) ? std::atan2(k.ny, k.nx) : NAN;
-    ends.push_back({k.a, theta});
-    if (k.b >= 0) ends.push_back({k.b, theta + M_PI});
-  }
-  std::stable_sort(ends.begin(), ends.end(),
-                   [](const End &x, const End &y) { return x.tag < y.tag; });
-  end_tag.clear();
-  end_start.clear();
-  end_angle.resize(ends.size());
-  for (size_t e = 0; e < ends.size(); e++) {
-    if (e == 0 || ends[e].tag != ends[e - 1].tag) {
-      end_tag.push_back(ends[e].tag);
-      end_start.push_back(static_cast<int>(e));
-    }
-    end_angle[e] = ends[e].angle;
-  }
-  end_start.push_back(static_cast<int>(ends.size()));
-}
-
-/* ----------------------------------------------------------------------
-   contact count of every selected particle; particles without contacts
-   count as zeros
-------------------------------------------------------------------------- */
-
-std::vector<int> ComputeFabric::contacts_per_particle() const
-{
-  std::vector<int> per_particle;
-  per_particle.reserve(nparticles);
-  for (size_t t = 0; t + 1 < end_start.size(); t++)
-    if (end_start[t + 1] > end_start[t]) per_particle.push_back(end_start[t + 1] - end_start[t]);
-  per_particle.resize(std::max<long>(nparticles, per_particle.size()), 0);
-  return per_particle;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -535,72 +255,38 @@ double ComputeFabric::sample_area()
   return area;
 }
 
-/* ----------------------------------------------------------------------
-   mean stability index over the particles with >= 2 contacts (rattlers
-   with 0 or 1 contact count as 1 when 'rattlers yes')
-------------------------------------------------------------------------- */
-
-double ComputeFabric::mean_stability_index()
-{
-  // summed in tag order, so the same on any number of ranks
-  double sum = 0.0;
-  long n = 0;
-  for (size_t t = 0; t + 1 < end_start.size(); t++) {
-    const int first = end_start[t], last = end_start[t + 1];
-    if (last - first < 2) continue;
-    angles.assign(end_angle.begin() + first, end_angle.begin() + last);
-    sum += fabric::stability_index(angles);
-    n++;
-  }
-  if (rattlers_flag) {
-    const long rattlers = nparticles - n;
-    sum += static_cast<double>(rattlers);
-    n = nparticles;
-  }
-  return n > 0 ? sum / n : 0.0;
-}
-
 /* ---------------------------------------------------------------------- */
 
 void ComputeFabric::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  gather_contacts();
+  const StepContacts &step = contacts_now();
 
   std::fill(vector, vector + VECTOR_SIZE, 0.0);
-  const fabric::BinCorrection correction = estimator == Estimator::Published
-                                               ? fabric::BinCorrection::Published
-                                               : fabric::BinCorrection::Unbiased;
-  fabric::Anisotropy fabric_a;
-  fabric::ForceAnisotropy force_a;
-  if (estimator == Estimator::Tensor) {
-    fabric_a = fabric::normal_anisotropy_tensor(contact_list);
-    force_a = fabric::force_anisotropy_tensor(contact_list, fabric_a);
-  } else {
-    const fabric::Histogram hist = fabric::polar_histogram(contact_list, nbins);
-    fabric_a = fabric::normal_anisotropy_histogram(hist, correction);
-    force_a = fabric::force_anisotropy_histogram(hist, correction);
-  }
-  vector[A] = fabric_a.a;
-  vector[THETA_A] = fabric_a.theta * RAD2DEG;
-  vector[A_N] = force_a.an;
-  vector[THETA_N] = force_a.theta_n * RAD2DEG;
-  vector[F0] = force_a.f0;
-  vector[A_T] = force_a.at;
-  vector[THETA_T] = force_a.theta_t * RAD2DEG;
-  vector[EMPTY_BINS] = force_a.empty_bins;
+  const fabric::Anisotropies an = fabric::anisotropies(step.contacts, nbins, estimator);
+  vector[A] = an.fabric.a;
+  vector[THETA_A] = an.fabric.theta * RAD2DEG;
+  vector[A_N] = an.force.an;
+  vector[THETA_N] = an.force.theta_n * RAD2DEG;
+  vector[F0] = an.force.f0;
+  vector[A_T] = an.force.at;
+  vector[THETA_T] = an.force.theta_t * RAD2DEG;
+  vector[EMPTY_BINS] = an.force.empty_bins;
 
-  const fabric::Coordination coord = fabric::coordination(contacts_per_particle());
+  const fabric::Coordination coord =
+      fabric::coordination(fabric::contact_counts(step.particles, step.nparticles));
   vector[CN] = coord.Cn;
   vector[ZM] = coord.Zm;
-  vector[NCONTACT] = static_cast<double>(contact_list.size());
-  vector[NPARTICLE] = static_cast<double>(nparticles);
-  vector[NO_NORMAL] = static_cast<double>(no_normal);
+  vector[NCONTACT] = static_cast<double>(step.contacts.size());
+  vector[NPARTICLE] = static_cast<double>(step.nparticles);
+  vector[NO_NORMAL] = static_cast<double>(step.no_normal.count);
 
-  if (stability_flag) vector[MEAN_GSI] = mean_stability_index();
+  if (stability_flag)
+    vector[MEAN_STABILITY_INDEX] =
+        fabric::mean_stability_index(step.particles, step.nparticles, rattlers_flag);
 
   if (stress_flag) {
-    const Eigen::Matrix2d sigma = fabric::love_weber_stress(contact_list, sample_area());
+    const Eigen::Matrix2d sigma = fabric::love_weber_stress(step.contacts, sample_area());
     vector[SXX] = sigma(0, 0);
     vector[SYY] = sigma(1, 1);
     vector[SXY] = 0.5 * (sigma(0, 1) + sigma(1, 0));
@@ -612,11 +298,9 @@ void ComputeFabric::compute_vector()
 void ComputeFabric::compute_array()
 {
   invoked_array = update->ntimestep;
-  gather_contacts();
-  const fabric::Histogram hist = fabric::polar_histogram(contact_list, nbins);
-  const double width = 2.0 * M_PI / nbins;
+  const fabric::Histogram hist = fabric::polar_histogram(contacts_now().contacts, nbins);
   for (int g = 0; g < nbins; g++) {
-    array[g][0] = (g + 0.5) * width * RAD2DEG;
+    array[g][0] = fabric::bin_centre(g, nbins) * RAD2DEG;
     array[g][1] = hist.count[g];
     array[g][2] = hist.mean_fn[g];
     array[g][3] = hist.mean_ft[g];
@@ -631,26 +315,19 @@ void ComputeFabric::compute_array()
 void ComputeFabric::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
-  gather_contacts();
+  const StepContacts &step = contacts_now();
 
   if (atom->nmax > nmax_atom) {
     memory->destroy(array_atom);
     nmax_atom = atom->nmax;
     memory->create(array_atom, nmax_atom, 2, "fabric:array_atom");
   }
-  const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++) array_atom[i][0] = array_atom[i][1] = 0.0;
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!atom_selected(i)) continue;
-    const auto it =
-        std::lower_bound(end_tag.begin(), end_tag.end(), static_cast<long>(atom->tag[i]));
-    const bool found = it != end_tag.end() && *it == atom->tag[i];
-    const size_t t = static_cast<size_t>(it - end_tag.begin());
-    const int first = found ? end_start[t] : 0;
-    const int last = found ? end_start[t + 1] : 0;
-    angles.assign(end_angle.begin() + first, end_angle.begin() + last);
-    array_atom[i][0] = static_cast<double>(last - first);
+  Region *selected_region = region();
+  for (int i = 0; i < atom->nlocal; i++) {
+    array_atom[i][0] = array_atom[i][1] = 0.0;
+    if (!atom_selected(atom, i, groupbit, selected_region)) continue;
+    const std::vector<double> angles = step.particles.angles_of(atom->tag[i]);
+    array_atom[i][0] = static_cast<double>(angles.size());
     array_atom[i][1] = fabric::stability_index(angles);
   }
 }
@@ -659,8 +336,9 @@ void ComputeFabric::compute_peratom()
 
 double ComputeFabric::memory_usage()
 {
-  double bytes = contact_list.capacity() * sizeof(fabric::Contact);
-  bytes += (sendbuf.capacity() + recvbuf.capacity()) * sizeof(double);
+  double bytes = current.contacts.capacity() * sizeof(fabric::Contact);
+  bytes += current.particles.angles.capacity() * sizeof(double);
+  bytes += contact_gather.memory_usage();
   bytes += 2.0 * nmax_atom * sizeof(double);
   return bytes;
 }

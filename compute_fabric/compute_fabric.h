@@ -2,8 +2,10 @@
    compute fabric: contact-normal and contact-force fabric of a 2D
    granular assembly (Rothenburg & Bathurst 1989), coordination numbers,
    geometrical stability index (Momeni et al. 2022) and Love-Weber stress.
-   See doc/compute_fabric.md. Mathematics in fabric_statistics.h and
-   stability_index.h (no LIGGGHTS); this class gathers contacts only.
+   See doc/compute_fabric.md. The contacts come from fabric_gather.h, the
+   mathematics from fabric_statistics.h, particle_contacts.h and
+   stability_index.h (no LIGGGHTS); this class parses its arguments, calls
+   them and fills its outputs.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -17,13 +19,13 @@ ComputeStyle(fabric,ComputeFabric)
 #ifndef LMP_COMPUTE_FABRIC_H
 #define LMP_COMPUTE_FABRIC_H
 
-#include <cstdint>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "compute.h"
+#include "fabric_gather.h"
 #include "fabric_statistics.h"
+#include "particle_contacts.h"
 #include "scalar_input.h"
 
 namespace LAMMPS_NS {
@@ -52,7 +54,7 @@ class ComputeFabric : public Compute {
     NCONTACT,
     NPARTICLE,
     EMPTY_BINS,
-    MEAN_GSI,
+    MEAN_STABILITY_INDEX, // lambda
     SXX,
     SYY,
     SXY,
@@ -61,61 +63,38 @@ class ComputeFabric : public Compute {
   };
 
  private:
-  enum class Estimator { Unbiased, Published, Tensor };
-
   int nbins;
-  Estimator estimator;
-  bool stability_flag; // mean GSI in the vector
-  bool rattlers_flag;  // include particles with < 2 contacts in the mean GSI
-  bool histogram_flag; // polar histograms as global array
+  fabric::Estimator estimator;
+  bool stability_flag; // mean stability index in the vector
+  bool rattlers_flag;  // include particles with < 2 contacts in the mean stability index
+  bool histogram_flag; // polar histogram as global array
   bool stress_flag;
+  bool walls_flag;      // count particle-wall contacts
   ScalarInput area_in;  // Love-Weber area: a number or v_name
   int area_ivar;        // ... the variable, found at init
   std::string idregion; // empty: no region
   int iregion;
 
-  // LIGGGHTS' computes that report contact forces: pair/gran/local for
-  // particle-particle, wall/gran/local for particle-(mesh) wall contacts
-  struct ContactSource {
-    const char *style;
-    char *id = nullptr; // the user's compute, or ours (ID_contacts, ID_walls)
-    class ComputePairGranLocal *compute = nullptr;
-  };
-  ContactSource pairs{"pair/gran/local"}, walls{"wall/gran/local"};
-  bool walls_flag; // count particle-wall contacts
+  FabricGather contact_gather;
 
-  bigint gathered_step;                      // timestep of the contact list below
-  std::vector<fabric::Contact> contact_list; // all contacts, identical on every rank
-  std::vector<double> sendbuf, recvbuf;
-  std::vector<std::pair<uint64_t, int>> sort_keys;
-  struct End {
-    long tag;
-    double angle;
-  };
-  std::vector<End> ends;      // both ends of every contact
-  std::vector<long> end_tag;  // the tags with contacts, ascending
-  std::vector<int> end_start; // contact angles about end_tag[t] (CSR)
-  std::vector<double> end_angle, angles;
-  std::vector<int> recvcounts, displs;
-  long nparticles;     // particles in group (and region)
-  long no_normal;      // contacts with coincident centres (no normal)
-  int first_no_normal; // ... the first of them in contact_list
+  // The contacts of one timestep, shared by the vector, the array and the
+  // per-atom array (they may all be invoked in one step).
+  struct StepContacts {
+    bigint step = -1;
+    std::vector<fabric::Contact> contacts; // sorted by tags, the same on every rank
+    fabric::ParticleContacts particles;
+    long nparticles = 0; // in group (and region)
+    fabric::MissingNormals no_normal{0, -1};
+  } current;
   bool warned_no_normal;
 
   int nmax_atom;
 
   void parse_args(int iarg, int narg, char **arg);
-  void find_source(ContactSource &src);
-  void create_source(ContactSource &src, const char *suffix);
-  void init_source(ContactSource &src, const char *suffix);
-  void pack_contacts(const ContactSource &src, bool wall);
-  void gather_contacts();
-  bool atom_selected(int i) const;
+  Region *region() const;
+  const StepContacts &contacts_now();
+  void warn_no_normal(const StepContacts &step);
   double sample_area();
-  std::vector<int> contacts_per_particle() const;
-  void warn_no_normal();
-  void index_contact_ends();
-  double mean_stability_index();
 };
 
 } // namespace LAMMPS_NS

@@ -18,11 +18,6 @@ double bin_width(int nbins)
   return kTwoPi / nbins;
 }
 
-double bin_centre(int bin, double width)
-{
-  return (bin + 0.5) * width;
-}
-
 // Orientation of a pi-periodic quantity from its second harmonic
 // (c, s) = amplitude * (cos 2theta, sin 2theta).
 Anisotropy from_second_harmonic(double c, double s)
@@ -83,7 +78,7 @@ BinnedForceSums sum_non_empty_bins(const Histogram &h)
   for (int g = 0; g < h.nbins; ++g) {
     if (is_empty_bin(h, g)) continue;
     const auto i = static_cast<std::size_t>(g);
-    const double twice_centre = 2.0 * bin_centre(g, width);
+    const double twice_centre = 2.0 * bin_centre(g, h.nbins);
     sums.f0_numerator += h.mean_fn[i] * width;
     sums.covered_angle += width;
     sums.fn_cos += h.mean_fn[i] * std::cos(twice_centre) * width;
@@ -145,6 +140,11 @@ bool has_normal(const Contact &c)
   return std::isfinite(c.nx) && std::isfinite(c.ny) && (c.nx != 0.0 || c.ny != 0.0);
 }
 
+double bin_centre(int bin, int nbins)
+{
+  return (bin + 0.5) * bin_width(nbins);
+}
+
 int angle_bin(double angle, int nbins)
 {
   if (!std::isfinite(angle) || nbins < 1) return -1;
@@ -153,6 +153,14 @@ int angle_bin(double angle, int nbins)
   if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
   const int bin = static_cast<int>(wrapped / bin_width(nbins));
   return bin < nbins ? bin : nbins - 1; // wrapped / width can round up to nbins
+}
+
+MissingNormals missing_normals(const std::vector<Contact> &contacts)
+{
+  MissingNormals missing{0, -1};
+  for (std::size_t c = 0; c < contacts.size(); ++c)
+    if (!has_normal(contacts[c]) && missing.count++ == 0) missing.first = static_cast<long>(c);
+  return missing;
 }
 
 Histogram polar_histogram(const std::vector<Contact> &contacts, int nbins)
@@ -187,7 +195,7 @@ Anisotropy normal_anisotropy_histogram(const Histogram &h, BinCorrection correct
   double total = 0.0, cos_sum = 0.0, sin_sum = 0.0;
   for (int g = 0; g < h.nbins; ++g) {
     const double count = h.count[static_cast<std::size_t>(g)];
-    const double twice_centre = 2.0 * bin_centre(g, width);
+    const double twice_centre = 2.0 * bin_centre(g, h.nbins);
     total += count;
     cos_sum += count * std::cos(twice_centre);
     sin_sum += count * std::sin(twice_centre);
@@ -262,6 +270,18 @@ ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
   result.at = 2.0 * tangential.a / f0;
   result.theta_t = tangential.theta;
   return result;
+}
+
+Anisotropies anisotropies(const std::vector<Contact> &contacts, int nbins, Estimator estimator)
+{
+  if (estimator == Estimator::Tensor) {
+    const Anisotropy fabric = normal_anisotropy_tensor(contacts);
+    return {fabric, force_anisotropy_tensor(contacts, fabric)};
+  }
+  const BinCorrection correction =
+      estimator == Estimator::Published ? BinCorrection::Published : BinCorrection::Unbiased;
+  const Histogram h = polar_histogram(contacts, nbins);
+  return {normal_anisotropy_histogram(h, correction), force_anisotropy_histogram(h, correction)};
 }
 
 Coordination coordination(const std::vector<int> &contacts_per_particle)

@@ -45,6 +45,17 @@ Contact make_contact(long a, long b, double lx, double ly, double fx, double fy,
 // contacts are skipped by polar_histogram, the tensors and love_weber_stress.
 bool has_normal(const Contact &c);
 
+// Contacts without a normal: how many, and the index of the first (-1: none),
+// for the warning that names it.
+struct MissingNormals {
+  long count;
+  long first;
+};
+MissingNormals missing_normals(const std::vector<Contact> &contacts);
+
+// The centre (bin + 1/2) 2 pi / nbins of a bin, in radians (see angle_bin).
+double bin_centre(int bin, int nbins);
+
 // The bin among nbins (width 2 pi / nbins, bin 0 from +x) of an angle in radians of
 // any range, wrapped to [0, 2 pi); -1 (no bin) for a NaN or infinite angle or
 // nbins < 1, so a histogram never indexes out of range.
@@ -121,6 +132,19 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram &h,
 // for a < 1; contacts where w <= 0 are skipped (the model cannot describe them).
 ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
                                         const Anisotropy &fabric);
+
+// How compute fabric's 'estimator' fits both roses: from the polar histogram
+// of nbins bins with either bin correction, or from the tensors (nbins unused).
+enum class Estimator { Unbiased, Published, Tensor };
+
+struct Anisotropies {
+  Anisotropy fabric;
+  ForceAnisotropy force;
+};
+
+// The fabric and force anisotropies by one estimator; the tensor force fit
+// divides by the tensor fabric.
+Anisotropies anisotropies(const std::vector<Contact> &contacts, int nbins, Estimator estimator);
 
 // n_contacts is sum(contacts_per_particle), i.e. 2 N_c when only particle-particle
 // contacts are counted; whether a wall contact adds 1 is the caller's choice.

@@ -1,5 +1,7 @@
 #include "stability_index.h"
 
+#include "particle_contacts.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -53,6 +55,24 @@ double stability_index(std::vector<double> angles)
   for (std::size_t anchor = 0; anchor < angles.size(); ++anchor)
     smallest = std::min(smallest, misfit_from_anchor(angles, anchor));
   return smallest / kTwoPi;
+}
+
+double mean_stability_index(const ParticleContacts &particles, long n_particles, bool with_rattlers)
+{
+  const std::vector<int> &first = particles.first_contact_of;
+  double sum = 0.0;
+  long n = 0;
+  for (std::size_t t = 0; t + 1 < first.size(); ++t) {
+    if (first[t + 1] - first[t] < 2) continue;
+    sum += stability_index(std::vector<double>(particles.angles.begin() + first[t],
+                                               particles.angles.begin() + first[t + 1]));
+    ++n;
+  }
+  if (with_rattlers) {
+    sum += static_cast<double>(n_particles - n);
+    n = n_particles;
+  }
+  return n > 0 ? sum / static_cast<double>(n) : 0.0;
 }
 
 } // namespace fabric

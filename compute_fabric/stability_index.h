@@ -15,4 +15,13 @@ namespace fabric {
 // (contacts without a normal) are left out; 0 or 1 remaining contact -> 1.
 double stability_index(std::vector<double> angles);
 
+struct ParticleContacts;
+
+// The sample's lambda: the mean over the particles with >= 2 contacts (with or
+// without a normal), summed in tag order so that it is the same on any number
+// of ranks. with_rattlers: the other particles up to n_particles (0 or 1
+// contact) enter with lambda = 1. 0 when no particle qualifies.
+double mean_stability_index(const ParticleContacts &particles, long n_particles,
+                            bool with_rattlers);
+
 } // namespace fabric

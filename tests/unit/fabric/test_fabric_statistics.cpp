@@ -700,4 +700,69 @@ TEST(NoContacts, EverythingIsZeroAndFinite)
   EXPECT_TRUE(fabric::love_weber_stress(none, 1.0).isZero(0.0));
 }
 
+// ---- what compute fabric calls ---------------------------------------------
+
+TEST(MissingNormals, CountAndFirst)
+{
+  const Contact none{1, 2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const std::vector<Contact> contacts = {contact_at(deg(10), 1.0), none, contact_at(deg(20), 1.0),
+                                         none};
+  const fabric::MissingNormals missing = fabric::missing_normals(contacts);
+  EXPECT_EQ(missing.count, 2);
+  EXPECT_EQ(missing.first, 1);
+  const fabric::MissingNormals all_there = fabric::missing_normals({contact_at(deg(10), 1.0)});
+  EXPECT_EQ(all_there.count, 0);
+  EXPECT_EQ(all_there.first, -1);
+}
+
+TEST(BinCentre, MiddleOfTheBin)
+{
+  EXPECT_NEAR(fabric::bin_centre(0, 18), deg(10), kTol);
+  EXPECT_NEAR(fabric::bin_centre(17, 18), deg(350), kTol);
+  EXPECT_NEAR(fabric::bin_centre(2, 6), deg(150), kTol);
+}
+
+// Contacts at 30 and 90 deg (fn = 1) in 6 bins of 60 deg: bins 0, 1, 3, 4 hold
+// one entry each (centres 30, 90, 210, 270), bins 2 and 5 are empty. With
+// c the bin correction, sum N_g cos 2th_g = -1 and sin 2th_g = sqrt 3, N = 4:
+//   a cos 2th_a = (2c/4)(-1), a sin 2th_a = (2c/4) sqrt 3 -> a = c, th_a = 60 deg
+//   f0 = 1; an (cos, sin) 2th_n = c/pi (-1, sqrt 3) pi/3 -> an = 2c/3, th_n = 60 deg
+void expect_thirty_and_ninety(const fabric::Anisotropies &an, double c)
+{
+  EXPECT_NEAR(an.fabric.a, c, kTol);
+  EXPECT_NEAR(an.fabric.theta, deg(60), kTol);
+  EXPECT_NEAR(an.force.f0, 1.0, kTol);
+  EXPECT_NEAR(an.force.an, 2.0 * c / 3.0, kTol);
+  EXPECT_NEAR(an.force.theta_n, deg(60), kTol);
+  EXPECT_NEAR(an.force.at, 0.0, kTol);
+  EXPECT_EQ(an.force.empty_bins, 2);
+}
+
+TEST(Anisotropies, HistogramEstimatorsUseTheirBinCorrection)
+{
+  const std::vector<Contact> contacts = {contact_at(deg(30), 1.0), contact_at(deg(90), 1.0)};
+  const double width = kPi / 3;
+  expect_thirty_and_ninety(fabric::anisotropies(contacts, 6, fabric::Estimator::Unbiased),
+                           width / std::sin(width)); // 2 pi / (3 sqrt 3)
+  expect_thirty_and_ninety(fabric::anisotropies(contacts, 6, fabric::Estimator::Published),
+                           std::sin(width) / width);
+}
+
+// Two contacts at 0 deg, one at 90 deg, fn = 1: phi = diag(2/3, 1/3), a = 2/3,
+// th_a = 0; w = 5/3 at 0 deg and 1/3 at 90 deg, so
+// chi_n = (1/3) [2 diag(1, 0) / (5/3) + diag(0, 1) / (1/3)] = diag(0.4, 1):
+// f0 = 1.4, an = 2 (1 - 0.4) / 1.4 = 6/7 along 90 deg. No bins, none empty.
+TEST(Anisotropies, TensorEstimatorDividesTheForcesByTheTensorFabric)
+{
+  const std::vector<Contact> contacts = {contact_at(deg(0), 1.0), contact_at(deg(0), 1.0),
+                                         contact_at(deg(90), 1.0)};
+  const fabric::Anisotropies an = fabric::anisotropies(contacts, 6, fabric::Estimator::Tensor);
+  EXPECT_NEAR(an.fabric.a, 2.0 / 3.0, kTol);
+  EXPECT_NEAR(an.fabric.theta, 0.0, kTol);
+  EXPECT_NEAR(an.force.f0, 1.4, kTol);
+  EXPECT_NEAR(an.force.an, 6.0 / 7.0, kTol);
+  expect_same_axis(an.force.theta_n, deg(90), kTol);
+  EXPECT_EQ(an.force.empty_bins, 0);
+}
+
 } // namespace

@@ -2,6 +2,8 @@
 // invariances that any correct implementation must have.
 #include "stability_index.h"
 
+#include "particle_contacts.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -158,6 +160,43 @@ TEST(StabilityIndex, NonFiniteAnglesAreLeftOut)
   std::vector<double> quarter = radians({0, 90});
   quarter.insert(quarter.begin() + 1, nan);
   EXPECT_NEAR(fabric::stability_index(quarter), 0.25, kTol);
+}
+
+// ---- sample mean (compute fabric's vector entry 13) ---------------------------
+
+// Particle 1: contacts at 0 and 90 deg (lambda 1/4); 2: at 0, 120, 240 (0);
+// 3: one contact (a rattler); 4: two contacts, one without a normal (1).
+fabric::ParticleContacts four_particles()
+{
+  fabric::ParticleContacts p;
+  p.tags = {1, 2, 3, 4};
+  p.first_contact_of = {0, 2, 5, 6, 8};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  p.angles = {0.0, kPi / 2, 0.0, 2 * kPi / 3, 4 * kPi / 3, 0.0, 0.0, nan};
+  return p;
+}
+
+TEST(MeanStabilityIndex, OverParticlesWithTwoOrMoreContacts)
+{
+  // (1/4 + 0 + 1) / 3; particle 3 and the 6 - 4 without contacts are left out
+  EXPECT_NEAR(fabric::mean_stability_index(four_particles(), 6, false), 1.25 / 3, kTol);
+}
+
+TEST(MeanStabilityIndex, RattlersCountAsOne)
+{
+  // (1/4 + 0 + 1 + 3 rattlers: particle 3 and the two without contacts) / 6
+  EXPECT_NEAR(fabric::mean_stability_index(four_particles(), 6, true), 4.25 / 6, kTol);
+}
+
+TEST(MeanStabilityIndex, ZeroWhenNoParticleQualifies)
+{
+  fabric::ParticleContacts one_contact;
+  one_contact.tags = {7};
+  one_contact.first_contact_of = {0, 1};
+  one_contact.angles = {0.0};
+  EXPECT_EQ(fabric::mean_stability_index(one_contact, 1, false), 0.0);
+  EXPECT_EQ(fabric::mean_stability_index(one_contact, 1, true), 1.0);
+  EXPECT_EQ(fabric::mean_stability_index(fabric::ParticleContacts{}, 0, true), 0.0);
 }
 
 } // namespace

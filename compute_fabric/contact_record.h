@@ -1,0 +1,41 @@
+// One contact as the ranks exchange it, and the order of the gathered list.
+//
+// A record is plain doubles so that a single MPI_Allgatherv moves every
+// contact; sorting the gathered records by tags makes every statistic sum in
+// the same order on any number of ranks. No LIGGGHTS: fabric_gather.cpp fills
+// the records from LIGGGHTS' computes and turns them into contacts.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "fabric_statistics.h"
+
+namespace fabric {
+
+// Tags (b = -1 for a wall), centres (wall: b's position is the contact
+// point), force on a, radius sum (wall: a's radius).
+enum ContactField { TAG_A, TAG_B, XA, YA, XB, YB, FAX, FAY, RADIUS_SUM, CONTACT_FIELDS };
+using ContactRecord = std::array<double, CONTACT_FIELDS>;
+
+// A particle-particle contact as compute pair/gran/local reports it (the force
+// on i), stored with a = the smaller tag: when i and j swap, so does the side
+// the force acts on, and it changes sign.
+ContactRecord pair_record(long tag_i, long tag_j, const double x_i[2], const double x_j[2],
+                          const double force_on_i[2], double radius_sum);
+
+// A particle-wall contact: the wall is b (tag -1), placed at the contact point.
+ContactRecord wall_record(long tag, const double centre[2], const double contact_point[2],
+                          const double force[2], double radius);
+
+// The indices of the records (CONTACT_FIELDS doubles each) in the order of
+// (tag a, tag b), a wall after all the particles a touches; records with the
+// same tags keep their order. Tags must be < 2^31 (LIGGGHTS' are ints).
+std::vector<int> order_by_tags(const std::vector<double> &records);
+
+// The contact of a record, given its branch vector (lx, ly) = x_b - x_a: the
+// caller undoes periodic wraps, which needs the simulation box. The force on b
+// from a is minus the recorded force on a.
+Contact record_contact(const double *record, double lx, double ly);
+
+} // namespace fabric
