@@ -41,26 +41,6 @@ class ScalarInput {
     if (sign == Sign::NonNegative && !(value_ >= 0.0)) args.bad("must be a number >= 0", usage);
   }
 
-  void parse(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name, const char *arg)
-  {
-    const std::string text = arg;
-    if (text.compare(0, 2, "v_") == 0) {
-      varname_ = text.substr(2);
-      if (varname_.empty())
-        lmp->error->all(
-            FLERR,
-            keyword_message(prefix, name, text, "the variable name after v_ is empty").c_str());
-      return;
-    }
-    char *end = nullptr;
-    value_ = strtod(arg, &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(value_))
-      lmp->error->all(FLERR,
-                      keyword_message(prefix, name, text,
-                                      "must be a finite number or v_name (an equal-style variable)")
-                          .c_str());
-  }
-
   // finds the variable (input scripts may define it after the style)
   void init(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name)
   {

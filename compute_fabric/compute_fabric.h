@@ -16,8 +16,8 @@ ComputeStyle(fabric,ComputeFabric)
 
 #else
 
-#ifndef LMP_COMPUTE_FABRIC_H
-#define LMP_COMPUTE_FABRIC_H
+#ifndef LIGGGHTS_MEMBRANE_COMPUTE_FABRIC_H
+#define LIGGGHTS_MEMBRANE_COMPUTE_FABRIC_H
 
 #include <string>
 #include <vector>

@@ -4,7 +4,9 @@
 // contact; sorting the gathered records by tags makes every statistic sum in
 // the same order on any number of ranks. No LIGGGHTS: fabric_gather.cpp fills
 // the records from LIGGGHTS' computes and turns them into contacts.
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_CONTACT_RECORD_H
+#define LIGGGHTS_MEMBRANE_CONTACT_RECORD_H
+
 
 #include <array>
 #include <vector>
@@ -39,3 +41,5 @@ std::vector<int> order_by_tags(const std::vector<double> &records);
 Contact record_contact(const double *record, double lx, double ly);
 
 } // namespace fabric
+
+#endif

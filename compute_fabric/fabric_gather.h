@@ -7,8 +7,8 @@
    forces are obtained" and "Rank-independent gathering".
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_FABRIC_GATHER_H
-#define LMP_FABRIC_GATHER_H
+#ifndef LIGGGHTS_MEMBRANE_FABRIC_GATHER_H
+#define LIGGGHTS_MEMBRANE_FABRIC_GATHER_H
 
 #include <vector>
 

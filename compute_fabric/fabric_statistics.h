@@ -2,7 +2,9 @@
 //
 // Kept free of LIGGGHTS so every formula can be checked against exact cases; the
 // compute style only gathers contacts (once each, across MPI ranks) and calls these.
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_FABRIC_STATISTICS_H
+#define LIGGGHTS_MEMBRANE_FABRIC_STATISTICS_H
+
 
 #include <Eigen/Core>
 
@@ -170,3 +172,5 @@ Coordination coordination(const std::vector<int> &contacts_per_particle);
 Eigen::Matrix2d love_weber_stress(const std::vector<Contact> &contacts, double area);
 
 } // namespace fabric
+
+#endif

@@ -2,7 +2,9 @@
 // their angles about its centre (stability index). Built from the contact list
 // by a stable sort of the contact ends, so time and memory follow the number of
 // contacts, not the largest atom ID (IDs may be sparse up to 2^31).
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_PARTICLE_CONTACTS_H
+#define LIGGGHTS_MEMBRANE_PARTICLE_CONTACTS_H
+
 
 #include <vector>
 
@@ -30,3 +32,5 @@ ParticleContacts particle_contacts(const std::vector<Contact> &contacts);
 std::vector<int> contact_counts(const ParticleContacts &particles, long n_particles);
 
 } // namespace fabric
+
+#endif

@@ -1,7 +1,9 @@
 // Geometrical stability index (Momeni et al., Geotechnics 2 (2022) 297-316;
 // spec section 4). Separate from fabric_statistics.h because it is per particle
 // (dumpable per atom) rather than a sample statistic.
-#pragma once
+#ifndef LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
+#define LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
+
 
 #include <vector>
 
@@ -25,3 +27,5 @@ double mean_stability_index(const ParticleContacts &particles, long n_particles,
                             bool with_rattlers);
 
 } // namespace fabric
+
+#endif

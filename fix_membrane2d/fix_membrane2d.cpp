@@ -34,11 +34,7 @@ using namespace membrane;
 
 namespace {
 
-const char *const PREFIX = "Fix membrane2d: ";
-std::string msg(const std::string &text)
-{
-  return PREFIX + text;
-}
+const char *const PREFIX = "Fix membrane2d: "; // every message starts so (doc/messages.md)
 
 const char *const KEYWORDS[] = {"pressure",  "ylo",       "yhi",   "sides",        "band",
                                 "tolerance", "thickness", "every", "frictionless", "polyline"};
@@ -163,7 +159,7 @@ void FixMembrane2d::init()
 
   // D50 sets the default band width and gap tolerance; with the density, the inertial number
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
-  if (grains.empty) error->all(FLERR, msg("the fix group has no atoms").c_str());
+  if (grains.empty) error->all(FLERR, (std::string(PREFIX) + "the fix group has no atoms").c_str());
   d50 = grains.d50;
   density = grains.density;
   set_lengths(definition, d50, run);
@@ -300,9 +296,9 @@ void FixMembrane2d::chain_lost(int k, const std::string &why)
   s.watch.always = true; // search again at the next step
   const std::string where =
       std::string(side_name(k)) + " side at step " + std::to_string(update->ntimestep);
-  if (s.chain_tags.empty()) error->all(FLERR, msg(no_chain_error(where, why)).c_str());
+  if (s.chain_tags.empty()) error->all(FLERR, (PREFIX + no_chain_error(where, why)).c_str());
   if (!s.warned_lost && comm->me == 0)
-    error->warning(FLERR, msg(chain_lost_warning(where, why)).c_str());
+    error->warning(FLERR, (PREFIX + chain_lost_warning(where, why)).c_str());
   s.warned_lost = true;
 }
 
@@ -338,7 +334,8 @@ void FixMembrane2d::check_stability()
     run.warned_chain_step = true;
     if (comm->me == 0)
       error->warning(
-          FLERR, msg(chain_step_warning(watched.chain_step_tag, watched.chain_step, step)).c_str());
+          FLERR,
+          (PREFIX + chain_step_warning(watched.chain_step_tag, watched.chain_step, step)).c_str());
   }
   // p = the membrane pressure, the smaller principal stress: I is an upper bound
   const double limit = stability::INERTIAL_QUASI_STATIC;
@@ -348,7 +345,8 @@ void FixMembrane2d::check_stability()
     run.warned_inertial = true;
     if (comm->me == 0)
       error->warning(
-          FLERR, msg(inertial_warning(run.inertial, limit, step, d50, density, pressure)).c_str());
+          FLERR,
+          (PREFIX + inertial_warning(run.inertial, limit, step, d50, density, pressure)).c_str());
   }
 }
 
@@ -379,9 +377,9 @@ void FixMembrane2d::restart(char *raw)
   const std::string why =
       read_record(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double),
                   definition, same, run, chains);
-  if (!why.empty()) error->all(FLERR, msg(restart_unreadable(id, why, !same)).c_str());
+  if (!why.empty()) error->all(FLERR, (PREFIX + restart_unreadable(id, why, !same)).c_str());
   if (!same) {
-    if (comm->me == 0) error->warning(FLERR, msg(restart_other_definition(id)).c_str());
+    if (comm->me == 0) error->warning(FLERR, (PREFIX + restart_other_definition(id)).c_str());
     return;
   }
   state_kept = true;
