@@ -52,8 +52,9 @@ so only then does the straight run follow the same arithmetic as the split one.
 
 Every RESULT the straight run prints must be printed by the split run as often,
 with the same values (exactly, or within '#@ restart-tolerance': |a - b| <=
-RTOL max(|a|, |b|) + ATOL); the test fails when no RESULT was compared. The
-'#@ expect' / '#@ output' lines are checked on both runs. Example:
+RTOL max(|a|, |b|) + ATOL; a NaN never matches); the test fails when no RESULT
+was compared. The '#@ expect' / '#@ output' lines are checked on both runs.
+tests/README.md lists the restart-checked scripts. Example:
 
     #@ restart
     include         ${testdir}/setup.inc          # box and atoms
@@ -157,6 +158,25 @@ def split_script(text, dirs):
     return "".join(out)
 
 
+def compare_restart(straight_out, split_out, rtol, atol):
+    """(number of values compared, failures): every RESULT of the straight run's output,
+    each time printed, against the split run's."""
+    straight, split = result_lists(straight_out), result_lists(split_out)
+    compared, failures = 0, []
+    for name, values in straight.items():
+        got = split.get(name, [])
+        if len(got) != len(values):
+            failures.append("RESULT %s printed %d times by the straight run, %d times by the split run"
+                            % (name, len(values), len(got)))
+            continue
+        for i, (a, b) in enumerate(zip(values, got)):
+            compared += 1
+            tag = name if len(values) == 1 else "%s[%d]" % (name, i + 1)
+            if not abs(a - b) <= rtol * max(abs(a), abs(b)) + atol:
+                failures.append("RESULT %s = %r straight, %r split (difference %g)" % (tag, a, b, b - a))
+    return compared, failures
+
+
 def restart_check(exe, np_, script, dirs, work, timeout):
     """--restart: the straight and the split run print the same RESULTs. Returns failures."""
     if "restart" not in dirs:
@@ -189,23 +209,10 @@ def restart_check(exe, np_, script, dirs, work, timeout):
         failures += check_expectations(dirs, out, "%s np=%d" % (label, np_))
     if len(outputs) < 2:
         return failures
-    straight, split = result_lists(outputs["straight"]), result_lists(outputs["split"])
-    compared = 0
-    for name, values in straight.items():
-        got = split.get(name, [])
-        if len(got) != len(values):
-            failures.append("RESULT %s printed %d times by the straight run, %d times by the split run"
-                            % (name, len(values), len(got)))
-            continue
-        for i, (a, b) in enumerate(zip(values, got)):
-            compared += 1
-            ok = abs(a - b) <= rtol * max(abs(a), abs(b)) + atol
-            tag = name if len(values) == 1 else "%s[%d]" % (name, i + 1)
-            if not ok:
-                print("FAIL restart np=%d %s: straight %r, split %r (diff %g)" % (np_, tag, a, b, b - a))
-                failures.append("np=%d: RESULT %s = %r straight, %r split" % (np_, tag, a, b))
-            elif a != b:
-                print("ok   restart np=%d %s: straight %r, split %r (within tolerance)" % (np_, tag, a, b))
+    compared, bad = compare_restart(outputs["straight"], outputs["split"], rtol, atol)
+    for line in bad:
+        print("FAIL restart np=%d %s" % (np_, line))
+    failures += ["np=%d: %s" % (np_, line) for line in bad]
     if compared == 0:
         failures.append("no RESULT compared between the straight and the split run")
     print("compared %d RESULT values of the straight and the split run on np=%d (rtol %g, atol %g)"
