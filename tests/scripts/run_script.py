@@ -15,7 +15,57 @@ The script states its own expectations in comment lines starting with '#@':
   #@ ranks 1 2 4                   --compare: all RESULT values equal on these rank counts
   #@ tolerance RTOL ATOL           ... within this relative/absolute tolerance
 
+  #@ restart                       --restart: the script is restart-checked (see below)
+  #@ begin-definitions             --restart: the lines up to '#@ end-definitions' are
+  #@ end-definitions                 repeated after read_restart (see below)
+  #@ split                         --restart: where the split run is cut
+  #@ restart-pre COMMAND           --restart: COMMAND goes between 'clear' and 'read_restart'
+  #@ restart-tolerance RTOL ATOL   --restart: RESULTs equal within this tolerance (default 0 0)
+
 The script prints values as:  print "RESULT name ${var}"
+
+--restart runs the script twice. The straight run runs it as it is ('#@ split' is
+a comment to LIGGGHTS); the split run runs a copy in which every '#@ split' line is
+replaced by
+
+    write_restart split<k>.restart
+    clear
+    <the '#@ restart-pre' commands; default: atom_modify map array,
+     communicate single vel yes>
+    read_restart  split<k>.restart
+    <the lines of every definitions block above this split and below the
+     script's last 'clear' before it>
+
+Definitions are what a restart file does not carry: newton, neighbor, the
+property/global contact coefficients, pair_style/pair_coeff, timestep (read_restart
+leaves the units' default, 1e-8 s in si), every fix and compute, thermo settings.
+Variables survive 'clear' and need no repeating.
+LIGGGHTS 3.8 stores neither the atom map nor ghost velocities in restart files,
+and 'atom_modify map' is refused once read_restart has made the box: hence the
+'#@ restart-pre' default (give '#@ restart-pre' lines to replace it). A script may
+hold several cases separated by 'clear', each with its blocks and splits. The blocks
+and splits must be in the script itself, not in a file it includes (the block may
+hold 'include' lines). Put the split between two runs ('run A' / '#@ split' /
+'run B'): LIGGGHTS re-sorts atoms and neighbour lists at the start of every run,
+so only then does the straight run follow the same arithmetic as the split one.
+'time' is not in restart files: RESULTs must not depend on it.
+
+Every RESULT the straight run prints must be printed by the split run as often,
+with the same values (exactly, or within '#@ restart-tolerance': |a - b| <=
+RTOL max(|a|, |b|) + ATOL; a NaN never matches); the test fails when no RESULT
+was compared. The '#@ expect' / '#@ output' lines are checked on both runs.
+tests/README.md lists the restart-checked scripts. Example:
+
+    #@ restart
+    include         ${testdir}/setup.inc          # box and atoms
+    #@ begin-definitions
+    include         ${testdir}/contacts.inc       # pair style, walls, timestep
+    fix             g all stability/guard every 10
+    #@ end-definitions
+    run             100
+    #@ split
+    run             100
+    print           "RESULT x1 $(x[1])"
 """
 import argparse
 import concurrent.futures
@@ -53,6 +103,121 @@ def run(exe, np_, script, workdir, timeout, testdir=None):
 
 def results(output):
     return {k: float(v) for k, v in RESULT.findall(output)}
+
+
+def result_lists(output):
+    """Every printed value of each RESULT name, in the order printed."""
+    out = {}
+    for k, v in RESULT.findall(output):
+        out.setdefault(k, []).append(float(v))
+    return out
+
+
+DEFAULT_RESTART_PRE = ["atom_modify map array", "communicate single vel yes"]
+
+
+def split_script(text, dirs):
+    """The split-run copy of a '#@ restart' script (see the docstring), or raise ValueError."""
+    pre = [d[len("restart-pre"):].strip() for d in dirs if d.startswith("restart-pre ")]
+    pre = pre or DEFAULT_RESTART_PRE
+    out, definitions, block, nsplit = [], [], None, 0
+    for line in text.splitlines(keepends=True):
+        d = line[2:].strip() if line.startswith("#@") else None
+        if d == "begin-definitions":
+            if block is not None:
+                raise ValueError("'#@ begin-definitions' inside a definitions block")
+            block = []
+        elif d == "end-definitions":
+            if block is None:
+                raise ValueError("'#@ end-definitions' without '#@ begin-definitions'")
+            definitions += block
+            block = None
+        elif d == "split":
+            if block is not None:
+                raise ValueError("'#@ split' inside a definitions block")
+            nsplit += 1
+            name = "split%d.restart" % nsplit
+            out.append("# --- '#@ split' %d (run_script.py --restart)\n" % nsplit)
+            out.append("write_restart   %s\nclear\n" % name)
+            out += [c + "\n" for c in pre]
+            out.append("read_restart    %s\n" % name)
+            out += definitions
+            out.append("# --- end of '#@ split' %d\n" % nsplit)
+            continue
+        elif block is not None:
+            block.append(line if line.endswith("\n") else line + "\n")
+        elif d is None and line.split()[:1] == ["clear"]:
+            definitions = []  # a new case: the definitions above are gone with it
+        out.append(line)
+    if block is not None:
+        raise ValueError("'#@ begin-definitions' without '#@ end-definitions'")
+    if nsplit == 0:
+        raise ValueError("no '#@ split' line")
+    if not definitions:
+        raise ValueError("no '#@ begin-definitions' ... '#@ end-definitions' block above the split")
+    return "".join(out)
+
+
+def compare_restart(straight_out, split_out, rtol, atol):
+    """(number of values compared, failures): every RESULT of the straight run's output,
+    each time printed, against the split run's."""
+    straight, split = result_lists(straight_out), result_lists(split_out)
+    compared, failures = 0, []
+    for name, values in straight.items():
+        got = split.get(name, [])
+        if len(got) != len(values):
+            failures.append("RESULT %s printed %d times by the straight run, %d times by the split run"
+                            % (name, len(values), len(got)))
+            continue
+        for i, (a, b) in enumerate(zip(values, got)):
+            compared += 1
+            tag = name if len(values) == 1 else "%s[%d]" % (name, i + 1)
+            if not abs(a - b) <= rtol * max(abs(a), abs(b)) + atol:
+                failures.append("RESULT %s = %r straight, %r split (difference %g)" % (tag, a, b, b - a))
+    return compared, failures
+
+
+def restart_check(exe, np_, script, dirs, work, timeout):
+    """--restart: the straight and the split run print the same RESULTs. Returns failures."""
+    if "restart" not in dirs:
+        return ["%s has no '#@ restart' line" % script]
+    rtol, atol = 0.0, 0.0
+    for d in dirs:
+        if d.startswith("restart-tolerance "):
+            rtol, atol = (float(x) for x in d.split()[1:3])
+    with open(script) as f:
+        text = f.read()
+    try:
+        split_text = split_script(text, dirs)
+    except ValueError as e:
+        return ["%s: %s" % (script, e)]
+    testdir = os.path.dirname(script)
+    outputs, failures = {}, []
+    for label in ("straight", "split"):
+        folder = os.path.join(work, label)
+        os.makedirs(folder)
+        path = script
+        if label == "split":
+            path = os.path.join(folder, "split.in")
+            with open(path, "w") as f:
+                f.write(split_text)
+        rc, out = run(exe, np_, path, folder, timeout, testdir)
+        if rc != 0:
+            failures.append("%s run on np=%d failed (rc=%d):\n%s" % (label, np_, rc, out[-3000:]))
+            continue
+        outputs[label] = out
+        failures += check_expectations(dirs, out, "%s np=%d" % (label, np_))
+    if len(outputs) < 2:
+        return failures
+    compared, bad = compare_restart(outputs["straight"], outputs["split"], rtol, atol)
+    for line in bad:
+        print("FAIL restart np=%d %s" % (np_, line))
+    failures += ["np=%d: %s" % (np_, line) for line in bad]
+    if compared == 0:
+        failures.append("no RESULT compared between the straight and the split run")
+    print("compared %d RESULT values of the straight and the split run on np=%d (rtol %g, atol %g)"
+          % (compared, np_, rtol, atol))
+    return failures
 
 
 def check_expectations(dirs, output, label):
@@ -107,6 +272,9 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--compare", action="store_true", help="compare RESULTs across '#@ ranks'")
     ap.add_argument("--errors", action="store_true", help="run the '#@ error' cases")
+    ap.add_argument("--restart", action="store_true",
+                    help="'#@ restart': a run split at '#@ split' by write_restart / read_restart "
+                         "prints the RESULTs of the straight run")
     ap.add_argument("--timeout", type=int, default=600)
     ap.add_argument("script")
     a = ap.parse_args()
@@ -142,6 +310,8 @@ def main():
                     tail = "\n".join(out.strip().splitlines()[-5:])
                     failures.append("case '%s': rc=%d, wanted '%s' in output; got:\n%s"
                                     % (command, rc, expect, tail))
+        elif a.restart:
+            failures += restart_check(a.exe, a.np, script, dirs, work, a.timeout)
         elif a.compare:
             ranks = [int(x) for d in dirs if d.startswith("ranks ") for x in d.split()[1:]]
             rtol, atol = 1e-12, 0.0
