@@ -182,6 +182,7 @@ void FixMembrane2d::setup_pre_force(int vflag)
 {
   evaluate_platens();
   check_platens_enclose(lmp, PREFIX, gather, ylo_in, ylo, yhi_in, yhi);
+  gather.start_traffic(update->ntimestep, run.counters.detections);
   // the chains of the last run (or the restart file) still hold when no disk
   // of the group was created, deleted, renumbered, retyped or moved since
   // (this step's detection, if any, was then done in the last step of that run)
@@ -213,6 +214,7 @@ void FixMembrane2d::post_run()
   atoms.restore(chains);
   run.checksum = gather.group_checksum();
   state_kept = true;
+  gather.report_traffic(id, update->ntimestep, run.counters.detections);
 }
 
 void FixMembrane2d::setup(int vflag)

@@ -49,6 +49,7 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
     std::vector<double> &extent = sides[k].slices.extents();
     MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
                   k == RIGHT ? MPI_MAX : MPI_MIN, world);
+    traffic_.detection_bytes += sizeof(double) * extent.size();
     sides[k].slices.finish();
   }
 
@@ -69,6 +70,7 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
     }
   }
   allgather_doubles(world, send_, recv_, counts_, displs_);
+  traffic_.detection_bytes += gathered_bytes();
 
   // No sorting: the chain search depends on the set of disks, not on their
   // order (ties are broken by tag), so any rank count gives the same chain.
@@ -106,6 +108,7 @@ void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideDat
     MPI_Bcast(&size, 1, MPI_INT, owner(k), world);
     result_buf_.resize(size);
     MPI_Bcast(result_buf_.data(), size, MPI_INT, owner(k), world);
+    traffic_.detection_bytes += sizeof(int) * (1.0 + size);
     if (comm->me != owner(k) &&
         !membrane::unpack_result(result_buf_.data(), result_buf_.size(), results[k]))
       error->one(FLERR, (prefix_ + "internal error: a broadcast chain search is corrupt").c_str());
@@ -147,6 +150,7 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
   const double trailer[WATCH_FIELDS] = {-1.0, local_displacement, 0.0, 0.0, 0.0, 0.0};
   send_.insert(send_.end(), trailer, trailer + WATCH_FIELDS);
   allgather_doubles(world, send_, recv_, counts_, displs_);
+  traffic_.step_bytes += gathered_bytes();
 
   const std::string step = std::to_string(update->ntimestep);
   if (recv_.size() != WATCH_FIELDS * (list.size() + comm->nprocs))
@@ -187,6 +191,29 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
     }
   }
   return out;
+}
+
+void MembraneGather::start_traffic(bigint step, long long detections)
+{
+  traffic_ = Traffic();
+  traffic_.first_step = step;
+  traffic_.first_detections = detections;
+}
+
+void MembraneGather::report_traffic(const char *id, bigint step, long long detections) const
+{
+  if (comm->me != 0) return;
+  const std::string text =
+      membrane::traffic_summary(id, traffic_.step_bytes, traffic_.detection_bytes,
+                                step - traffic_.first_step, detections - traffic_.first_detections);
+  if (screen) fprintf(screen, "%s%s\n", prefix_.c_str(), text.c_str());
+  if (logfile) fprintf(logfile, "%s%s\n", prefix_.c_str(), text.c_str());
+}
+
+double MembraneGather::gathered_bytes() const
+{
+  return sizeof(double) * static_cast<double>(recv_.size()) +
+         sizeof(int) * static_cast<double>(counts_.size());
 }
 
 std::uint64_t MembraneGather::group_checksum()

@@ -51,6 +51,13 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   Watched watched(const std::vector<membrane::WatchEntry> &list, membrane::SideChain (&chains)[2],
                   bool watch_relations, MembraneSideData (&sides)[2]);
 
+  // What this rank receives in the collectives above during a run (the
+  // per-step gathers of watched disks, the gathers of a detection): counted
+  // from the start of a run (`step`, the detections so far) and written to
+  // the screen and log at its end (membrane::traffic_summary).
+  void start_traffic(LAMMPS_NS::bigint step, long long detections);
+  void report_traffic(const char *id, LAMMPS_NS::bigint step, long long detections) const;
+
   // Order-free hash of the group's disks (tag, type, position, radius).
   std::uint64_t group_checksum();
   // Lowest and highest disk centre of the group.
@@ -63,6 +70,12 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   int groupbit_;
   std::vector<double> send_, recv_;
   std::vector<int> counts_, displs_, slice_of_atom_, result_buf_;
+  struct Traffic {
+    double step_bytes = 0.0, detection_bytes = 0.0;
+    LAMMPS_NS::bigint first_step = 0;
+    long long first_detections = 0;
+  } traffic_;
+  double gathered_bytes() const; // of the last allgather_doubles, counts included
 };
 
 #endif

@@ -119,6 +119,19 @@ std::string restart_other_definition(const std::string &id)
          "start from 0";
 }
 
+std::string traffic_summary(const std::string &id, double step_bytes, double detection_bytes,
+                            long long steps, long long detections)
+{
+  char buf[320];
+  std::snprintf(buf, sizeof(buf),
+                "%s: each rank received %.3g kB per step (chain, escaped and watched disks) and "
+                "%.3g kB per detection (bands, search results) over %lld steps with %lld "
+                "detections",
+                id.c_str(), steps > 0 ? step_bytes / steps / 1e3 : step_bytes / 1e3,
+                detections > 0 ? detection_bytes / detections / 1e3 : 0.0, steps, detections);
+  return buf;
+}
+
 void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyline,
                          const std::vector<Disk> &chain, const std::vector<Eigen::Vector2d> &forces)
 {

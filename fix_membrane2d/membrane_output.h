@@ -64,6 +64,12 @@ std::string chain_lost_warning(const std::string &where, const std::string &why)
 std::string restart_unreadable(const std::string &id, const std::string &reason, bool other_format);
 std::string restart_other_definition(const std::string &id);
 
+// What one rank received in the fix's collectives during a run of `steps`
+// steps with `detections` detections (the info line at the end of a run;
+// a run of 0 steps counts its setup as one).
+std::string traffic_summary(const std::string &id, double step_bytes, double detection_bytes,
+                            long long steps, long long detections);
+
 // One side's part of a polyline-file frame (doc/fix_membrane2d.md, "polyline").
 void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyline,
                          const std::vector<Disk> &chain,

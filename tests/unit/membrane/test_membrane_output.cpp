@@ -81,3 +81,14 @@ TEST(MembraneOutput, WarningsNameTheNumbers)
   EXPECT_NE(restart_unreadable("m", "x", true).find("read it with the version that wrote it"),
             std::string::npos);
 }
+
+TEST(MembraneOutput, TrafficPerStepAndPerDetection)
+{
+  EXPECT_EQ(traffic_summary("mem", 199172.0, 87200.0, 100, 10),
+            "mem: each rank received 1.99 kB per step (chain, escaped and watched disks) and "
+            "8.72 kB per detection (bands, search results) over 100 steps with 10 detections");
+  // a run of 0 steps: its setup's gather, no detection
+  EXPECT_EQ(traffic_summary("m", 1972.0, 0.0, 0, 0),
+            "m: each rank received 1.97 kB per step (chain, escaped and watched disks) and 0 kB "
+            "per detection (bands, search results) over 0 steps with 0 detections");
+}
