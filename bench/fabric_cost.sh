@@ -3,13 +3,13 @@
 # stability index, histogram and stress off ('basic') and on ('full'), on 1 and
 # 2 ranks: 200 steps with thermo output every step, minus the same run without
 # the compute, divided by 200; also as a multiple of one plain step.
-#   bench/fabric_cost.sh [RESTART]
+#   bench/fabric_cost.sh [RESTART]     (EXE=... another build, CSV=... another table)
 set -euo pipefail
 cd "$(dirname "$0")"
 restart=$(readlink -f "${1:-../out/biaxial/prepared.restart}")
-exe=$(readlink -f ../build/app/liggghts-membrane)
+exe=${EXE:-$(readlink -f ../build/app/liggghts-membrane)}
 [ -f "$restart" ] || { echo "no prepared sample $restart: run ./run.sh first"; exit 1; }
-csv=fabric_cost.csv
+csv=${CSV:-fabric_cost.csv}
 echo "ranks,what,ms_per_step" > $csv
 for np in 1 2; do
   for what in 0:none 1:basic 2:full; do

@@ -1,10 +1,14 @@
 /* ----------------------------------------------------------------------
-   compute fabric's contact gather: see fabric_gather.h
+   compute fabric's own contacts and their reduction: see fabric_local.h
 ------------------------------------------------------------------------- */
 
-#include "fabric_gather.h"
+#include "fabric_local.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "atom.h"
@@ -13,13 +17,14 @@
 #include "compute_pair_gran_local.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "group.h"
 #include "modify.h"
 #include "region.h"
 #include "update.h"
 
-#include "allgather.h"
 #include "contact_record.h"
+#include "fabric_sums.h"
 #include "style_args.h"
 
 using namespace LAMMPS_NS;
@@ -52,15 +57,34 @@ bool LAMMPS_NS::atom_selected(const Atom *atom, int i, int groupbit, Region *reg
   return region->match(x[i][0], x[i][1], x[i][2]) != 0;
 }
 
-FabricGather::FabricGather(LAMMPS *lammps, Compute *fabric_compute)
-  : Pointers(lammps), owner(fabric_compute)
+// MPI_Allreduce operation on (hi, lo) pairs: ExactSum::merge
+static void merge_exact_sums(void *in, void *inout, int *len, MPI_Datatype *)
 {
+  const double *from = static_cast<const double *>(in);
+  double *into = static_cast<double *>(inout);
+  for (int k = 0; k < *len; k++) {
+    ExactSum sum{into[2 * k], into[2 * k + 1]};
+    sum.merge({from[2 * k], from[2 * k + 1]});
+    into[2 * k] = sum.hi;
+    into[2 * k + 1] = sum.lo;
+  }
 }
 
-FabricGather::~FabricGather()
+FabricLocal::FabricLocal(LAMMPS *lammps, Compute *fabric_compute)
+  : Pointers(lammps), owner(fabric_compute)
+{
+  // a pair is one element, so MPI never splits one when it segments a reduction
+  MPI_Type_contiguous(2, MPI_DOUBLE, &pair_type);
+  MPI_Type_commit(&pair_type);
+  MPI_Op_create(merge_exact_sums, 1, &merge_op);
+}
+
+FabricLocal::~FabricLocal()
 {
   delete[] pairs.id;
   delete[] walls.id;
+  MPI_Op_free(&merge_op);
+  MPI_Type_free(&pair_type);
 }
 
 /* ----------------------------------------------------------------------
@@ -74,7 +98,7 @@ FabricGather::~FabricGather()
    keeps only the contacts of the compute fabric's group anyway.
 ------------------------------------------------------------------------- */
 
-void FabricGather::init(bool with_walls)
+void FabricLocal::init(bool with_walls)
 {
   init_source(pairs, "_contacts");
   if (!with_walls) return;
@@ -89,7 +113,7 @@ void FabricGather::init(bool with_walls)
   init_source(walls, "_walls");
 }
 
-void FabricGather::init_source(ContactSource &src, const char *suffix)
+void FabricLocal::init_source(ContactSource &src, const char *suffix)
 {
   find_source(src);
   if (!src.compute && src.id) {
@@ -101,7 +125,7 @@ void FabricGather::init_source(ContactSource &src, const char *suffix)
   if (!src.compute) create_source(src, suffix);
 }
 
-void FabricGather::find_source(ContactSource &src)
+void FabricLocal::find_source(ContactSource &src)
 {
   src.compute = nullptr;
   const std::string fabric_group = group->names[owner->igroup];
@@ -132,7 +156,7 @@ void FabricGather::find_source(ContactSource &src)
   }
 }
 
-void FabricGather::create_source(ContactSource &src, const char *suffix)
+void FabricLocal::create_source(ContactSource &src, const char *suffix)
 {
   delete[] src.id;
   src.id = copy_of(std::string(owner->id) + suffix);
@@ -152,19 +176,27 @@ void FabricGather::create_source(ContactSource &src, const char *suffix)
 }
 
 /* ----------------------------------------------------------------------
-   Every rank ends with the same contact list, sorted by (tag a, tag b) with
-   tag a < tag b, so every statistic is summed in the same order whatever the
-   number of ranks. pair/gran/local already reports a contact across a
-   processor boundary on one rank only (newton off: the smaller tag's side).
+   Each contact is counted on exactly one rank. compute pair/gran/local gets
+   a row per touching pair of its half neighbour list, i local; with newton
+   off a pair of an owned atom i and a ghost j is in the lists of both
+   owners, and LIGGGHTS keeps the row only where tag i > tag j (compute
+   pair/gran/local's add_pair): the contact belongs to the owner of the
+   LARGER tag. add_rows applies that rule again (a no-op on LIGGGHTS 3.8,
+   a guard against a duplicate). A pair of two owned atoms (also through a
+   periodic image) has one row. A wall contact belongs to its particle's
+   owner (wall/gran/local reports local particles only).
 ------------------------------------------------------------------------- */
 
-std::vector<Contact> FabricGather::gather(Region *region)
+void FabricLocal::collect(Region *region)
 {
   // Ghost velocities date from the start of the step; the contact model's
   // damping terms need the current ones, or a contact across a processor
   // boundary would differ from the same contact inside one rank.
   bool refreshed = false;
-  sendbuf.clear();
+  local.clear();
+  const int nall = atom->nlocal + atom->nghost;
+  if (static_cast<int>(ends.size()) < nall) ends.resize(nall);
+  for (int i = 0; i < nall; i++) ends[i].clear();
   for (ContactSource *src : {&pairs, &walls}) {
     if (!src->compute) continue;
     if (src->compute->invoked_local != update->ntimestep) {
@@ -172,29 +204,26 @@ std::vector<Contact> FabricGather::gather(Region *region)
       refreshed = true;
       src->compute->compute_local();
     }
-    pack_contacts(*src, src == &walls, region);
+    add_rows(*src, src == &walls, region);
   }
+  exchange_ends();
+}
 
-  allgather_doubles(world, sendbuf, recvbuf, recvcounts, displs);
-
-  const std::vector<int> order = order_by_tags(recvbuf);
-  std::vector<Contact> contacts(order.size());
-  for (size_t c = 0; c < order.size(); c++) {
-    const double *rec = recvbuf.data() + order[c] * CONTACT_FIELDS;
-    // positions are remapped into the box: undo a periodic wrap
-    double lx = rec[XB] - rec[XA], ly = rec[YB] - rec[YA], dz = 0.0;
-    domain->minimum_image(lx, ly, dz);
-    contacts[c] = record_contact(rec, lx, ly);
-  }
-  return contacts;
+void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
+{
+  local.push_back(c);
+  // a contact without a normal counts for both particles but has no angle
+  const double theta = has_normal(c) ? std::atan2(c.ny, c.nx) : NAN;
+  ends[index_a].push_back(theta);
+  if (index_b >= 0) ends[index_b].push_back(theta + M_PI);
 }
 
 // A pair/gran/local of group all (the user's) reports contacts outside the
 // group, and a region leaves out more: both ends must be selected.
-void FabricGather::pack_contacts(const ContactSource &src, bool wall, Region *region)
+void FabricLocal::add_rows(const ContactSource &src, bool wall, Region *region)
 {
   ComputePairGranLocal *c = src.compute;
-  const int nrows = c->size_local_rows;
+  const int nrows = c->size_local_rows, nlocal = atom->nlocal;
   double **rows = c->get_data();
   const int ox = c->offset_x1(), oid = c->offset_id1(), of = c->offset_f();
   const int groupbit = owner->groupbit;
@@ -202,39 +231,112 @@ void FabricGather::pack_contacts(const ContactSource &src, bool wall, Region *re
   for (int r = 0; r < nrows; r++) {
     const double *row = rows[r];
     ContactRecord rec;
+    int index_a, index_b = -1;
     if (wall) {
       // wall/gran/local: pos = contact point, particle centre; id = mesh, triangle, tag
       const double *cp = row + ox, *xp = row + ox + 3;
       const int ip = atom->map(static_cast<int>(row[oid + 2]));
-      if (ip < 0 || !(atom->mask[ip] & groupbit)) continue;
+      if (ip < 0 || ip >= nlocal || !(atom->mask[ip] & groupbit)) continue;
       if (region && !region->match(xp[0], xp[1], xp[2])) continue;
       rec = wall_record(static_cast<long>(row[oid + 2]), xp, cp, row + of, atom->radius[ip]);
+      index_a = ip;
     } else {
       const double *xa = row + ox, *xb = row + ox + 3;
-      const int ia = atom->map(static_cast<int>(row[oid]));
-      const int ib = atom->map(static_cast<int>(row[oid + 1]));
-      if (ia < 0 || ib < 0 || !(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit))
-        continue;
+      const long tag_i = static_cast<long>(row[oid]), tag_j = static_cast<long>(row[oid + 1]);
+      const int ia = atom->map(static_cast<int>(tag_i));
+      const int ib = atom->map(static_cast<int>(tag_j));
+      if (ia < 0 || ib < 0 || ia >= nlocal) continue;
+      // the rule above: a ghost pair belongs to the owner of the larger tag
+      if (!force->newton_pair && ib >= nlocal && tag_i < tag_j) continue;
+      if (!(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit)) continue;
       if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
         continue;
-      rec = pair_record(static_cast<long>(row[oid]), static_cast<long>(row[oid + 1]), xa, xb,
-                        row + of, atom->radius[ia] + atom->radius[ib]);
+      rec = pair_record(tag_i, tag_j, xa, xb, row + of, atom->radius[ia] + atom->radius[ib]);
+      index_a = tag_i < tag_j ? ia : ib;
+      index_b = tag_i < tag_j ? ib : ia;
     }
-    sendbuf.insert(sendbuf.end(), rec.begin(), rec.end());
+    // positions are remapped into the box: undo a periodic wrap
+    double lx = rec[XB] - rec[XA], ly = rec[YB] - rec[YA], dz = 0.0;
+    domain->minimum_image(lx, ly, dz);
+    add_contact(record_contact(rec.data(), lx, ly), index_a, index_b);
   }
 }
 
-long FabricGather::count_particles(Region *region) const
+/* ----------------------------------------------------------------------
+   The angles gathered at a ghost go to its owner by LIGGGHTS' reverse
+   communication (every ghost copy reaches the owner, through the copies a
+   corner ghost is made from). One round carries up to END_SLOTS - 1 angles
+   per ghost; rounds repeat until no rank has any left.
+------------------------------------------------------------------------- */
+
+void FabricLocal::exchange_ends()
 {
-  long nlocal_selected = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom_selected(atom, i, owner->groupbit, region)) nlocal_selected++;
-  long n = 0;
-  MPI_Allreduce(&nlocal_selected, &n, 1, MPI_LONG, MPI_SUM, world);
-  return n;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  sent.assign(nall, 0);
+  while (true) {
+    int left = 0;
+    for (int i = nlocal; i < nall && !left; i++)
+      if (sent[i] < static_cast<int>(ends[i].size())) left = 1;
+    int any = 0;
+    MPI_Allreduce(&left, &any, 1, MPI_INT, MPI_MAX, world);
+    if (!any) return;
+    comm->reverse_comm_compute(owner);
+  }
 }
 
-double FabricGather::memory_usage() const
+int FabricLocal::pack_ends(int n, int first, double *buf)
 {
-  return static_cast<double>(sendbuf.capacity() + recvbuf.capacity()) * sizeof(double);
+  for (int i = first; i < first + n; i++) {
+    double *slot = buf + (i - first) * END_SLOTS;
+    const int k = std::min(END_SLOTS - 1, static_cast<int>(ends[i].size()) - sent[i]);
+    slot[0] = k;
+    for (int e = 0; e < k; e++) slot[1 + e] = ends[i][sent[i] + e];
+    sent[i] += k;
+  }
+  return END_SLOTS;
+}
+
+void FabricLocal::unpack_ends(int n, const int *list, const double *buf)
+{
+  for (int m = 0; m < n; m++) {
+    const double *slot = buf + m * END_SLOTS;
+    const int k = static_cast<int>(slot[0]);
+    ends[list[m]].insert(ends[list[m]].end(), slot + 1, slot + 1 + k);
+  }
+}
+
+void FabricLocal::reduce(std::vector<double> &packed)
+{
+  MPI_Allreduce(MPI_IN_PLACE, packed.data(), static_cast<int>(packed.size() / 2), pair_type,
+                merge_op, world);
+}
+
+// (tag a, tag b) as one key in the order of the old sorted list: a wall
+// (b = -1) after the particles a touches. LIGGGHTS' tags are ints.
+void FabricLocal::first_missing_normal(long &a, long &b, double &distance)
+{
+  unsigned long long key = std::numeric_limits<unsigned long long>::max(), first = 0;
+  double length = std::numeric_limits<double>::infinity();
+  for (const Contact &c : local) {
+    if (has_normal(c)) continue;
+    const unsigned long long k = (static_cast<unsigned long long>(c.a) << 32) |
+                                 static_cast<uint32_t>(static_cast<int64_t>(c.b));
+    if (k < key) {
+      key = k;
+      length = std::hypot(c.lx, c.ly);
+    }
+  }
+  MPI_Allreduce(&key, &first, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, world);
+  if (key != first) length = std::numeric_limits<double>::infinity();
+  MPI_Allreduce(&length, &distance, 1, MPI_DOUBLE, MPI_MIN, world);
+  a = static_cast<long>(first >> 32);
+  const uint32_t low = static_cast<uint32_t>(first & 0xffffffffULL);
+  b = low == 0xffffffffU ? -1 : static_cast<long>(low);
+}
+
+double FabricLocal::memory_usage() const
+{
+  double bytes = static_cast<double>(local.capacity()) * sizeof(Contact);
+  for (const std::vector<double> &e : ends) bytes += e.capacity() * sizeof(double);
+  return bytes + sent.capacity() * sizeof(int);
 }
