@@ -209,7 +209,9 @@ const ComputeFabric::StepSums &ComputeFabric::sums_now()
   contact_source.collect(region());
 
   current.sums = fabric::FabricSums(nbins);
-  for (const fabric::Contact &c : contact_source.contacts()) current.sums.add(c);
+  const std::vector<fabric::Contact> &contacts = contact_source.contacts();
+  const std::vector<double> &theta = contact_source.angles();
+  for (size_t k = 0; k < contacts.size(); k++) current.sums.add(contacts[k], theta[k]);
   current.have_lambda = false;
   if (stability_flag) local_lambda();
   current.particles = fabric::ParticleSums();
@@ -229,7 +231,7 @@ const ComputeFabric::StepSums &ComputeFabric::sums_now()
   if (estimator == fabric::Estimator::Tensor) {
     const fabric::Anisotropy fabric = fabric::normal_anisotropy_tensor(current.sums);
     current.tensor = fabric::ForceTensorSums();
-    for (const fabric::Contact &c : contact_source.contacts()) current.tensor.add(c, fabric);
+    for (size_t k = 0; k < contacts.size(); k++) current.tensor.add(contacts[k], fabric, theta[k]);
     packed = current.tensor.pack();
     contact_source.reduce(packed);
     current.tensor.unpack(packed.data());
@@ -306,18 +308,7 @@ void ComputeFabric::compute_vector()
   const StepSums &step = sums_now();
 
   std::fill(vector, vector + VECTOR_SIZE, 0.0);
-  fabric::Anisotropies an;
-  if (estimator == fabric::Estimator::Tensor) {
-    an = {fabric::normal_anisotropy_tensor(step.sums),
-          fabric::force_anisotropy_tensor(step.tensor)};
-  } else {
-    const fabric::BinCorrection correction = estimator == fabric::Estimator::Published
-                                                 ? fabric::BinCorrection::Published
-                                                 : fabric::BinCorrection::Unbiased;
-    const fabric::Histogram h = fabric::histogram_of(step.sums);
-    an = {fabric::normal_anisotropy_histogram(h, correction),
-          fabric::force_anisotropy_histogram(h, correction)};
-  }
+  const fabric::Anisotropies an = fabric::anisotropies(step.sums, step.tensor, estimator);
   vector[A] = an.fabric.a;
   vector[THETA_A] = an.fabric.theta * RAD2DEG;
   vector[A_N] = an.force.an;

@@ -194,6 +194,7 @@ void FabricLocal::collect(Region *region)
   // boundary would differ from the same contact inside one rank.
   bool refreshed = false;
   local.clear();
+  theta.clear();
   const int nall = atom->nlocal + atom->nghost;
   if (static_cast<int>(ends.size()) < nall) ends.resize(nall);
   for (int i = 0; i < nall; i++) ends[i].clear();
@@ -213,9 +214,10 @@ void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
 {
   local.push_back(c);
   // a contact without a normal counts for both particles but has no angle
-  const double theta = has_normal(c) ? std::atan2(c.ny, c.nx) : NAN;
-  ends[index_a].push_back(theta);
-  if (index_b >= 0) ends[index_b].push_back(theta + M_PI);
+  const double angle = has_normal(c) ? std::atan2(c.ny, c.nx) : NAN;
+  theta.push_back(angle);
+  ends[index_a].push_back(angle);
+  if (index_b >= 0) ends[index_b].push_back(angle + M_PI);
 }
 
 // A pair/gran/local of group all (the user's) reports contacts outside the
@@ -337,6 +339,7 @@ void FabricLocal::first_missing_normal(long &a, long &b, double &distance)
 double FabricLocal::memory_usage() const
 {
   double bytes = static_cast<double>(local.capacity()) * sizeof(Contact);
+  bytes += theta.capacity() * sizeof(double);
   for (const std::vector<double> &e : ends) bytes += e.capacity() * sizeof(double);
   return bytes + sent.capacity() * sizeof(int);
 }

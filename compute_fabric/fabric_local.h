@@ -54,6 +54,8 @@ class FabricLocal : protected Pointers {
   // (ghosts included); then exchange_ends
   void collect(Region *region);
   const std::vector<fabric::Contact> &contacts() const { return local; }
+  // atan2(ny, nx) of each contact (NaN without a normal)
+  const std::vector<double> &angles() const { return theta; }
 
   // the angles (NaN: no normal) of the counted contacts of owned atom i < nlocal,
   // those seen on other ranks included (after collect)
@@ -83,6 +85,7 @@ class FabricLocal : protected Pointers {
   Compute *owner; // the compute fabric
   ContactSource pairs{"pair/gran/local"}, walls{"wall/gran/local"};
   std::vector<fabric::Contact> local;
+  std::vector<double> theta;             // per contact, see angles()
   std::vector<std::vector<double>> ends; // by local index, up to nall
   std::vector<int> sent;                 // ends of a ghost already sent to its owner
   MPI_Datatype pair_type;                // (hi, lo) of an ExactSum

@@ -60,12 +60,7 @@ template <class S> void merge_sums(S &into, const S &from)
   });
 }
 
-// the same formulas as fabric_statistics.cpp's tensor force fit
-double relative_fabric_density(const Contact &c, const Anisotropy &fabric)
-{
-  return 1.0 + fabric.a * std::cos(2.0 * std::atan2(c.ny, c.nx) - 2.0 * fabric.theta);
-}
-
+// as deviator_of in fabric_statistics.cpp
 Anisotropy major_axis(double xx, double xy, double yy)
 {
   const double c = xx - yy, s = 2.0 * xy;
@@ -100,17 +95,24 @@ FabricSums::FabricSums(int n)
 
 void FabricSums::add(const Contact &c)
 {
+  add(c, std::atan2(c.ny, c.nx));
+}
+
+void FabricSums::add(const Contact &c, double theta)
+{
   contacts.add(1.0);
   if (!has_normal(c)) {
     no_normal.add(1.0);
     return;
   }
-  for (double angle : {std::atan2(c.ny, c.nx), std::atan2(-c.ny, -c.nx)}) {
-    const int bin = angle_bin(angle, nbins);
-    if (bin < 0) continue;
-    bin_count[static_cast<std::size_t>(bin)].add(1.0);
-    bin_fn[static_cast<std::size_t>(bin)].add(c.fn);
-    bin_ft[static_cast<std::size_t>(bin)].add(c.ft);
+  const int bin = angle_bin(theta, nbins);
+  const int opposite = nbins % 2 == 0 ? (bin < 0 ? -1 : (bin + nbins / 2) % nbins)
+                                      : angle_bin(std::atan2(-c.ny, -c.nx), nbins);
+  for (int b : {bin, opposite}) {
+    if (b < 0) continue;
+    bin_count[static_cast<std::size_t>(b)].add(1.0);
+    bin_fn[static_cast<std::size_t>(b)].add(c.fn);
+    bin_ft[static_cast<std::size_t>(b)].add(c.ft);
   }
   phi_xx.add(c.nx * c.nx);
   phi_xy.add(c.nx * c.ny);
@@ -145,9 +147,14 @@ void FabricSums::unpack(const double *packed)
 
 void ForceTensorSums::add(const Contact &c, const Anisotropy &fabric)
 {
+  add(c, fabric, std::atan2(c.ny, c.nx));
+}
+
+void ForceTensorSums::add(const Contact &c, const Anisotropy &fabric, double theta)
+{
   if (!has_normal(c)) return;
   with_normal.add(1.0);
-  const double density = relative_fabric_density(c, fabric);
+  const double density = 1.0 + fabric.a * std::cos(2.0 * theta - 2.0 * fabric.theta);
   if (!(density > 0.0)) return;
   const double wn = c.fn / density, wt = c.ft / density;
   chi_n_xx.add(wn * (c.nx * c.nx));
@@ -242,6 +249,17 @@ ForceAnisotropy force_anisotropy_tensor(const ForceTensorSums &sums)
   result.at = 2.0 * tangential.a / f0;
   result.theta_t = tangential.theta;
   return result;
+}
+
+Anisotropies anisotropies(const FabricSums &sums, const ForceTensorSums &tensor,
+                          Estimator estimator)
+{
+  if (estimator == Estimator::Tensor)
+    return {normal_anisotropy_tensor(sums), force_anisotropy_tensor(tensor)};
+  const BinCorrection correction =
+      estimator == Estimator::Published ? BinCorrection::Published : BinCorrection::Unbiased;
+  const Histogram h = histogram_of(sums);
+  return {normal_anisotropy_histogram(h, correction), force_anisotropy_histogram(h, correction)};
 }
 
 Eigen::Matrix2d love_weber_stress(const FabricSums &sums, double area)

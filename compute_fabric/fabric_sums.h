@@ -42,8 +42,12 @@ struct FabricSums {
 
   // one contact: N_c, and with a normal the two bins of n and -n, the fabric
   // tensor and f (x) l (as polar_histogram, normal_anisotropy_tensor and
-  // love_weber_stress do with a list)
+  // love_weber_stress do with a list). With an even nbins the bin of -n is the
+  // bin of n plus nbins/2, so the histogram is point-symmetric exactly (the
+  // list's polar_histogram bins -n by its own angle: the same but for angles on
+  // a bin edge). theta = atan2(ny, nx) when the caller has it already.
   void add(const Contact &c);
+  void add(const Contact &c, double theta);
   void merge(const FabricSums &other);
 
   // all sums as (hi, lo) pairs, 2 * pairs() doubles; unpack of a packed array
@@ -60,6 +64,7 @@ struct ForceTensorSums {
   ExactSum chi_n_xx, chi_n_xy, chi_n_yy, chi_t_xx, chi_t_xy, chi_t_yy; // sums, not / N_n
 
   void add(const Contact &c, const Anisotropy &fabric);
+  void add(const Contact &c, const Anisotropy &fabric, double theta); // theta as above
   void merge(const ForceTensorSums &other);
   int pairs() const { return 7; }
   std::vector<double> pack() const;
@@ -90,6 +95,10 @@ Anisotropy normal_anisotropy_tensor(const FabricSums &sums);
 ForceAnisotropy force_anisotropy_tensor(const ForceTensorSums &sums);
 Eigen::Matrix2d love_weber_stress(const FabricSums &sums, double area);
 Coordination coordination(const ParticleSums &sums);
+// The fabric and force anisotropies by one estimator, as anisotropies() of
+// fabric_statistics.h; `tensor` (the second pass) is used by Estimator::Tensor only.
+Anisotropies anisotropies(const FabricSums &sums, const ForceTensorSums &tensor,
+                          Estimator estimator);
 // as mean_stability_index of stability_index.h
 double mean_stability_index(const ParticleSums &sums, bool with_rattlers);
 

@@ -138,6 +138,21 @@ TEST(ParticleSums, HandWorked)
   EXPECT_EQ(fabric::mean_stability_index(fabric::ParticleSums(), true), 0.0);
 }
 
+// contacts on bin edges (hexagonal angles, 20-degree bins): the bin of -n is
+// the bin of n plus nbins/2, so the rose is point-symmetric exactly
+TEST(FabricSums, PointSymmetricOnBinEdges)
+{
+  FabricSums s(18);
+  for (int k = 0; k < 6; k++) s.add(contact_at(1, 2, k * kPi / 3.0, 1.0 + k, 0.0, 1.0));
+  for (int g = 0; g < 9; g++) {
+    EXPECT_EQ(s.bin_count[g].value(), s.bin_count[g + 9].value()) << g;
+    EXPECT_EQ(s.bin_fn[g].value(), s.bin_fn[g + 9].value()) << g;
+  }
+  double total = 0.0;
+  for (const ExactSum &c : s.bin_count) total += c.value();
+  EXPECT_EQ(total, 12.0);
+}
+
 // one rank's sums, or two ranks' merged: the same to round-off (here exactly)
 TEST(FabricSums, SplitAndMergedEqualsOneAccumulator)
 {
@@ -223,6 +238,20 @@ TEST(FabricSums, FitsEqualTheAllContactsPath)
   expect_rel(f.f0, f_old.f0, 1e-12);
   expect_rel(f.at, f_old.at, 1e-12);
   expect_rel(f.theta_t, f_old.theta_t, 1e-12);
+
+  for (auto estimator :
+       {fabric::Estimator::Unbiased, fabric::Estimator::Published, fabric::Estimator::Tensor}) {
+    const fabric::Anisotropies x = fabric::anisotropies(s, t, estimator),
+                               y = fabric::anisotropies(contacts, 18, estimator);
+    expect_rel(x.fabric.a, y.fabric.a, 1e-12);
+    expect_rel(x.fabric.theta, y.fabric.theta, 1e-12);
+    expect_rel(x.force.an, y.force.an, 1e-12);
+    expect_rel(x.force.theta_n, y.force.theta_n, 1e-12);
+    expect_rel(x.force.f0, y.force.f0, 1e-12);
+    expect_rel(x.force.at, y.force.at, 1e-12);
+    expect_rel(x.force.theta_t, y.force.theta_t, 1e-12);
+    EXPECT_EQ(x.force.empty_bins, y.force.empty_bins);
+  }
 
   const Eigen::Matrix2d sigma = fabric::love_weber_stress(s, 0.02),
                         sigma_old = fabric::love_weber_stress(contacts, 0.02);
