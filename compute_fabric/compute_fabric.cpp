@@ -206,33 +206,27 @@ const ComputeFabric::StepSums &ComputeFabric::sums_now()
 {
   if (current.step == update->ntimestep) return current;
   current.step = update->ntimestep;
-  contact_source.collect(region());
+  const int left = contact_source.collect(region());
 
   current.sums = fabric::FabricSums(nbins);
   const std::vector<fabric::Contact> &contacts = contact_source.contacts();
   const std::vector<double> &theta = contact_source.angles();
   for (size_t k = 0; k < contacts.size(); k++) current.sums.add(contacts[k], theta[k]);
-  current.have_lambda = false;
-  if (stability_flag) local_lambda();
-  current.particles = fabric::ParticleSums();
-  Region *selected_region = region();
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom_selected(atom, i, groupbit, selected_region))
-      current.particles.add(static_cast<long>(contact_source.ends_of(i).size()),
-                            current.have_lambda ? current.lambda[i] : 0.0);
-
-  std::vector<double> packed = current.sums.pack();
-  const std::vector<double> particles = current.particles.pack();
-  packed.insert(packed.end(), particles.begin(), particles.end());
-  contact_source.reduce(packed);
-  current.sums.unpack(packed.data());
-  current.particles.unpack(packed.data() + 2 * current.sums.pairs());
+  current.particles = particle_sums(stability_flag);
+  if (contact_source.reduce(current.sums, current.particles, left)) {
+    // a ghost had more contact angles than one round carries: all of them first
+    contact_source.finish_ends();
+    current.particles = particle_sums(stability_flag);
+    std::vector<double> packed = current.particles.pack();
+    contact_source.reduce(packed);
+    current.particles.unpack(packed.data());
+  }
 
   if (estimator == fabric::Estimator::Tensor) {
     const fabric::Anisotropy fabric = fabric::normal_anisotropy_tensor(current.sums);
     current.tensor = fabric::ForceTensorSums();
     for (size_t k = 0; k < contacts.size(); k++) current.tensor.add(contacts[k], fabric, theta[k]);
-    packed = current.tensor.pack();
+    std::vector<double> packed = current.tensor.pack();
     contact_source.reduce(packed);
     current.tensor.unpack(packed.data());
   }
@@ -240,16 +234,21 @@ const ComputeFabric::StepSums &ComputeFabric::sums_now()
   return current;
 }
 
-// lambda of each selected owned particle from its contact angles (ghost pairs
-// included); 1 for fewer than 2 contacts with a normal
-void ComputeFabric::local_lambda()
+// this rank's particle sums; with_lambda: also lambda of each selected owned
+// particle from its contact angles (ghost pairs included), 1 for < 2 contacts
+fabric::ParticleSums ComputeFabric::particle_sums(bool with_lambda)
 {
-  current.lambda.assign(atom->nlocal, 1.0);
+  if (with_lambda) current.lambda.assign(atom->nlocal, 1.0);
+  current.have_lambda = with_lambda;
+  fabric::ParticleSums p;
   Region *selected_region = region();
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom_selected(atom, i, groupbit, selected_region))
-      current.lambda[i] = fabric::stability_index(contact_source.ends_of(i));
-  current.have_lambda = true;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!atom_selected(atom, i, groupbit, selected_region)) continue;
+    const std::vector<double> &angles = contact_source.ends_of(i);
+    if (with_lambda) current.lambda[i] = fabric::stability_index(angles);
+    p.add(static_cast<long>(angles.size()), with_lambda ? current.lambda[i] : 0.0);
+  }
+  return p;
 }
 
 /* ----------------------------------------------------------------------
@@ -359,7 +358,7 @@ void ComputeFabric::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
   sums_now();
-  if (!current.have_lambda) local_lambda();
+  if (!current.have_lambda) particle_sums(true);
 
   if (atom->nmax > nmax_atom) {
     memory->destroy(array_atom);

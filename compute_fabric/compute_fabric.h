@@ -96,7 +96,7 @@ class ComputeFabric : public Compute {
   void parse_args(int iarg, int narg, char **arg);
   Region *region() const;
   const StepSums &sums_now();
-  void local_lambda();
+  fabric::ParticleSums particle_sums(bool with_lambda);
   void warn_no_normal();
   double sample_area();
 };

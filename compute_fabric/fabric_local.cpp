@@ -187,7 +187,7 @@ void FabricLocal::create_source(ContactSource &src, const char *suffix)
    owner (wall/gran/local reports local particles only).
 ------------------------------------------------------------------------- */
 
-void FabricLocal::collect(Region *region)
+int FabricLocal::collect(Region *region)
 {
   // Ghost velocities date from the start of the step; the contact model's
   // damping terms need the current ones, or a contact across a processor
@@ -207,7 +207,8 @@ void FabricLocal::collect(Region *region)
     }
     add_rows(*src, src == &walls, region);
   }
-  exchange_ends();
+  sent.assign(nall, 0);
+  return send_ends_round();
 }
 
 void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
@@ -268,21 +269,26 @@ void FabricLocal::add_rows(const ContactSource &src, bool wall, Region *region)
    The angles gathered at a ghost go to its owner by LIGGGHTS' reverse
    communication (every ghost copy reaches the owner, through the copies a
    corner ghost is made from). One round carries up to END_SLOTS - 1 angles
-   per ghost; rounds repeat until no rank has any left.
+   per ghost; usually one round is enough (the flag whether more are needed
+   travels with the sums, reduce), else finish_ends repeats them.
 ------------------------------------------------------------------------- */
 
-void FabricLocal::exchange_ends()
+int FabricLocal::send_ends_round()
 {
+  comm->reverse_comm_compute(owner);
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  sent.assign(nall, 0);
+  for (int i = nlocal; i < nall; i++)
+    if (sent[i] < static_cast<int>(ends[i].size())) return 1;
+  return 0;
+}
+
+void FabricLocal::finish_ends()
+{
+  int left = 1, any = 1;
   while (true) {
-    int left = 0;
-    for (int i = nlocal; i < nall && !left; i++)
-      if (sent[i] < static_cast<int>(ends[i].size())) left = 1;
-    int any = 0;
     MPI_Allreduce(&left, &any, 1, MPI_INT, MPI_MAX, world);
     if (!any) return;
-    comm->reverse_comm_compute(owner);
+    left = send_ends_round();
   }
 }
 
@@ -311,6 +317,19 @@ void FabricLocal::reduce(std::vector<double> &packed)
 {
   MPI_Allreduce(MPI_IN_PLACE, packed.data(), static_cast<int>(packed.size() / 2), pair_type,
                 merge_op, world);
+}
+
+bool FabricLocal::reduce(FabricSums &sums, ParticleSums &particles, int left)
+{
+  std::vector<double> packed = sums.pack();
+  const std::vector<double> p = particles.pack();
+  packed.insert(packed.end(), p.begin(), p.end());
+  packed.push_back(left); // an exact sum of 0s and 1s
+  packed.push_back(0.0);
+  reduce(packed);
+  sums.unpack(packed.data());
+  particles.unpack(packed.data() + 2 * sums.pairs());
+  return packed[packed.size() - 2] > 0.0;
 }
 
 // (tag a, tag b) as one key in the order of the old sorted list: a wall

@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "fabric_statistics.h"
+#include "fabric_sums.h"
 #include "pointers.h"
 
 namespace LAMMPS_NS {
@@ -51,8 +51,11 @@ class FabricLocal : protected Pointers {
 
   // this rank's contacts between selected particles (with walls: and a wall),
   // a = the smaller tag, and the contact angles of their ends by local index
-  // (ghosts included); then exchange_ends
-  void collect(Region *region);
+  // (ghosts included), then one round of sending the ghosts' angles to their
+  // owners; 1 if this rank has angles left to send (then finish_ends), else 0
+  int collect(Region *region);
+  // the rounds until no rank has angles left (collective)
+  void finish_ends();
   const std::vector<fabric::Contact> &contacts() const { return local; }
   // atan2(ny, nx) of each contact (NaN without a normal)
   const std::vector<double> &angles() const { return theta; }
@@ -64,6 +67,8 @@ class FabricLocal : protected Pointers {
   // merge the ranks' partial sums (pairs of doubles, see fabric_sums.h) in place,
   // the same result on every rank
   void reduce(std::vector<double> &packed);
+  // both sums at once, and whether any rank had angles `left` (collect)
+  bool reduce(fabric::FabricSums &sums, fabric::ParticleSums &particles, int left);
 
   // the contact without a normal with the smallest (tag a, tag b) over all ranks,
   // its tags and the length of its branch vector (collective; call only when
@@ -96,7 +101,7 @@ class FabricLocal : protected Pointers {
   void init_source(ContactSource &src, const char *suffix);
   void add_rows(const ContactSource &src, bool wall, Region *region);
   void add_contact(const fabric::Contact &c, int index_a, int index_b);
-  void exchange_ends();
+  int send_ends_round();
 };
 
 } // namespace LAMMPS_NS
