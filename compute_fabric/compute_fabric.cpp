@@ -44,7 +44,7 @@ std::string msg(const std::string &text)
 ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
   : Compute(lammps, iarg, narg, arg), nbins(18), estimator(fabric::Estimator::Unbiased),
     stability_flag(false), rattlers_flag(false), histogram_flag(false), stress_flag(false),
-    walls_flag(false), area_ivar(-1), iregion(-1), contact_gather(lammps, this),
+    walls_flag(false), area_ivar(-1), iregion(-1), contact_source(lammps, this),
     warned_no_normal(false), nmax_atom(0)
 {
   if (domain->dimension != 2)
@@ -85,6 +85,9 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
   // per-atom: contact count, stability index
   peratom_flag = 1;
   size_peratom_cols = 2;
+
+  // the contact angles seen at ghosts go to their owners (FabricLocal)
+  comm_reverse = FabricLocal::END_SLOTS;
 }
 
 /* ----------------------------------------------------------------------
@@ -166,7 +169,7 @@ ComputeFabric::~ComputeFabric()
 
 void ComputeFabric::init()
 {
-  contact_gather.init(walls_flag);
+  contact_source.init(walls_flag);
 
   if (!idregion.empty()) {
     iregion = domain->find_region(const_cast<char *>(idregion.c_str()));
@@ -194,37 +197,78 @@ Region *ComputeFabric::region() const
 }
 
 /* ----------------------------------------------------------------------
-   the contacts are gathered (all ranks take part) once per timestep
+   once per timestep (all ranks take part): each rank adds its own contacts
+   and owned particles to partial sums, merged by one MPI_Allreduce (two
+   with estimator tensor, whose force sums need the fabric fit first)
 ------------------------------------------------------------------------- */
 
-const ComputeFabric::StepContacts &ComputeFabric::contacts_now()
+const ComputeFabric::StepSums &ComputeFabric::sums_now()
 {
   if (current.step == update->ntimestep) return current;
   current.step = update->ntimestep;
-  current.contacts = contact_gather.gather(region());
-  current.no_normal = fabric::missing_normals(current.contacts);
-  if (current.no_normal.count > 0) warn_no_normal(current);
-  current.particles = fabric::particle_contacts(current.contacts);
-  current.nparticles = contact_gather.count_particles(region());
+  const int left = contact_source.collect(region());
+
+  current.sums = fabric::FabricSums(nbins);
+  const std::vector<fabric::Contact> &contacts = contact_source.contacts();
+  const std::vector<double> &theta = contact_source.angles();
+  for (size_t k = 0; k < contacts.size(); k++) current.sums.add(contacts[k], theta[k]);
+  current.particles = particle_sums(stability_flag);
+  if (contact_source.reduce(current.sums, current.particles, left)) {
+    // a ghost had more contact angles than one round carries: all of them first
+    contact_source.finish_ends();
+    current.particles = particle_sums(stability_flag);
+    std::vector<double> packed = current.particles.pack();
+    contact_source.reduce(packed);
+    current.particles.unpack(packed.data());
+  }
+
+  if (estimator == fabric::Estimator::Tensor) {
+    const fabric::Anisotropy fabric = fabric::normal_anisotropy_tensor(current.sums);
+    current.tensor = fabric::ForceTensorSums();
+    for (size_t k = 0; k < contacts.size(); k++) current.tensor.add(contacts[k], fabric, theta[k]);
+    std::vector<double> packed = current.tensor.pack();
+    contact_source.reduce(packed);
+    current.tensor.unpack(packed.data());
+  }
+  if (current.sums.no_normal.value() > 0.0 && !warned_no_normal) warn_no_normal();
   return current;
+}
+
+// this rank's particle sums; with_lambda: also lambda of each selected owned
+// particle from its contact angles (ghost pairs included), 1 for < 2 contacts
+fabric::ParticleSums ComputeFabric::particle_sums(bool with_lambda)
+{
+  if (with_lambda) current.lambda.assign(atom->nlocal, 1.0);
+  current.have_lambda = with_lambda;
+  fabric::ParticleSums p;
+  Region *selected_region = region();
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!atom_selected(atom, i, groupbit, selected_region)) continue;
+    const std::vector<double> &angles = contact_source.ends_of(i);
+    if (with_lambda) current.lambda[i] = fabric::stability_index(angles);
+    p.add(static_cast<long>(angles.size()), with_lambda ? current.lambda[i] : 0.0);
+  }
+  return p;
 }
 
 /* ----------------------------------------------------------------------
    contacts with coincident centres (fabric::make_contact): once per compute,
-   by rank 0, from the contact list every rank holds
+   printed by rank 0, naming the pair with the smallest tags over all ranks
 ------------------------------------------------------------------------- */
 
-void ComputeFabric::warn_no_normal(const StepContacts &step)
+void ComputeFabric::warn_no_normal()
 {
-  if (warned_no_normal) return;
   warned_no_normal = true;
+  long a = 0, b = 0;
+  double distance = 0.0;
+  contact_source.first_missing_normal(a, b, distance); // collective
   if (comm->me != 0) return;
-  const fabric::Contact &k = step.contacts[step.no_normal.first];
-  const std::string pair = k.b >= 0 ? "atoms " + std::to_string(k.a) + " and " + std::to_string(k.b)
-                                    : "atom " + std::to_string(k.a) + " and a mesh wall";
+  const std::string pair = b >= 0 ? "atoms " + std::to_string(a) + " and " + std::to_string(b)
+                                  : "atom " + std::to_string(a) + " and a mesh wall";
+  const long count = static_cast<long>(current.sums.no_normal.value());
   const std::string text = msg(
-      std::to_string(step.no_normal.count) + " contact(s) with coincident centres (" + pair +
-      ", distance " + number_text(std::hypot(k.lx, k.ly)) +
+      std::to_string(count) + " contact(s) with coincident centres (" + pair + ", distance " +
+      number_text(distance) +
       ") have no normal; left out "
       "of the fabric and force directions, the stress and the stability index, still counted in "
       "N_c, C_n and Z_m (c_" +
@@ -260,10 +304,10 @@ double ComputeFabric::sample_area()
 void ComputeFabric::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  const StepContacts &step = contacts_now();
+  const StepSums &step = sums_now();
 
   std::fill(vector, vector + VECTOR_SIZE, 0.0);
-  const fabric::Anisotropies an = fabric::anisotropies(step.contacts, nbins, estimator);
+  const fabric::Anisotropies an = fabric::anisotropies(step.sums, step.tensor, estimator);
   vector[A] = an.fabric.a;
   vector[THETA_A] = an.fabric.theta * RAD2DEG;
   vector[A_N] = an.force.an;
@@ -273,20 +317,18 @@ void ComputeFabric::compute_vector()
   vector[THETA_T] = an.force.theta_t * RAD2DEG;
   vector[EMPTY_BINS] = an.force.empty_bins;
 
-  const fabric::Coordination coord =
-      fabric::coordination(fabric::contact_counts(step.particles, step.nparticles));
+  const fabric::Coordination coord = fabric::coordination(step.particles);
   vector[CN] = coord.Cn;
   vector[ZM] = coord.Zm;
-  vector[NCONTACT] = static_cast<double>(step.contacts.size());
-  vector[NPARTICLE] = static_cast<double>(step.nparticles);
-  vector[NO_NORMAL] = static_cast<double>(step.no_normal.count);
+  vector[NCONTACT] = step.sums.contacts.value();
+  vector[NPARTICLE] = step.particles.particles.value();
+  vector[NO_NORMAL] = step.sums.no_normal.value();
 
   if (stability_flag)
-    vector[MEAN_STABILITY_INDEX] =
-        fabric::mean_stability_index(step.particles, step.nparticles, rattlers_flag);
+    vector[MEAN_STABILITY_INDEX] = fabric::mean_stability_index(step.particles, rattlers_flag);
 
   if (stress_flag) {
-    const Eigen::Matrix2d sigma = fabric::love_weber_stress(step.contacts, sample_area());
+    const Eigen::Matrix2d sigma = fabric::love_weber_stress(step.sums, sample_area());
     vector[SXX] = sigma(0, 0);
     vector[SYY] = sigma(1, 1);
     vector[SXY] = 0.5 * (sigma(0, 1) + sigma(1, 0));
@@ -298,7 +340,7 @@ void ComputeFabric::compute_vector()
 void ComputeFabric::compute_array()
 {
   invoked_array = update->ntimestep;
-  const fabric::Histogram hist = fabric::polar_histogram(contacts_now().contacts, nbins);
+  const fabric::Histogram hist = fabric::histogram_of(sums_now().sums);
   for (int g = 0; g < nbins; g++) {
     array[g][0] = fabric::bin_centre(g, nbins) * RAD2DEG;
     array[g][1] = hist.count[g];
@@ -315,7 +357,8 @@ void ComputeFabric::compute_array()
 void ComputeFabric::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
-  const StepContacts &step = contacts_now();
+  sums_now();
+  if (!current.have_lambda) particle_sums(true);
 
   if (atom->nmax > nmax_atom) {
     memory->destroy(array_atom);
@@ -326,19 +369,27 @@ void ComputeFabric::compute_peratom()
   for (int i = 0; i < atom->nlocal; i++) {
     array_atom[i][0] = array_atom[i][1] = 0.0;
     if (!atom_selected(atom, i, groupbit, selected_region)) continue;
-    const std::vector<double> angles = step.particles.angles_of(atom->tag[i]);
-    array_atom[i][0] = static_cast<double>(angles.size());
-    array_atom[i][1] = fabric::stability_index(angles);
+    array_atom[i][0] = static_cast<double>(contact_source.ends_of(i).size());
+    array_atom[i][1] = current.lambda[i];
   }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int ComputeFabric::pack_reverse_comm(int n, int first, double *buf)
+{
+  return contact_source.pack_ends(n, first, buf);
+}
+
+void ComputeFabric::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  contact_source.unpack_ends(n, list, buf);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double ComputeFabric::memory_usage()
 {
-  double bytes = current.contacts.capacity() * sizeof(fabric::Contact);
-  bytes += current.particles.angles.capacity() * sizeof(double);
-  bytes += contact_gather.memory_usage();
-  bytes += 2.0 * nmax_atom * sizeof(double);
-  return bytes;
+  return contact_source.memory_usage() + current.lambda.capacity() * sizeof(double) +
+         2.0 * nmax_atom * sizeof(double);
 }

@@ -2,10 +2,11 @@
    compute fabric: contact-normal and contact-force fabric of a 2D
    granular assembly (Rothenburg & Bathurst 1989), coordination numbers,
    geometrical stability index (Momeni et al. 2022) and Love-Weber stress.
-   See doc/compute_fabric.md. The contacts come from fabric_gather.h, the
-   mathematics from fabric_statistics.h, particle_contacts.h and
-   stability_index.h (no LIGGGHTS); this class parses its arguments, calls
-   them and fills its outputs.
+   See doc/compute_fabric.md. Each rank reads its own contacts
+   (fabric_local.h), adds them to partial sums that are merged over the
+   ranks (fabric_sums.h) and fits from those; the mathematics is in
+   fabric_sums.h, fabric_statistics.h and stability_index.h (no LIGGGHTS).
+   This class parses its arguments, calls them and fills its outputs.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -23,9 +24,8 @@ ComputeStyle(fabric,ComputeFabric)
 #include <vector>
 
 #include "compute.h"
-#include "fabric_gather.h"
-#include "fabric_statistics.h"
-#include "particle_contacts.h"
+#include "fabric_local.h"
+#include "fabric_sums.h"
 #include "scalar_input.h"
 
 namespace LAMMPS_NS {
@@ -39,6 +39,8 @@ class ComputeFabric : public Compute {
   void compute_array();
   void compute_peratom();
   double memory_usage();
+  int pack_reverse_comm(int, int, double *);
+  void unpack_reverse_comm(int, int *, double *);
 
   // global vector layout (1-based in input scripts: c_ID[k])
   enum VectorIndex {
@@ -75,16 +77,17 @@ class ComputeFabric : public Compute {
   std::string idregion; // empty: no region
   int iregion;
 
-  FabricGather contact_gather;
+  FabricLocal contact_source;
 
-  // The contacts of one timestep, shared by the vector, the array and the
+  // The reduced sums of one timestep, shared by the vector, the array and the
   // per-atom array (they may all be invoked in one step).
-  struct StepContacts {
+  struct StepSums {
     bigint step = -1;
-    std::vector<fabric::Contact> contacts; // sorted by tags, the same on every rank
-    fabric::ParticleContacts particles;
-    long nparticles = 0; // in group (and region)
-    fabric::MissingNormals no_normal{0, -1};
+    fabric::FabricSums sums;
+    fabric::ForceTensorSums tensor; // estimator tensor only
+    fabric::ParticleSums particles; // lambda only with stability yes
+    std::vector<double> lambda;     // per local atom, when computed
+    bool have_lambda = false;
   } current;
   bool warned_no_normal;
 
@@ -92,8 +95,9 @@ class ComputeFabric : public Compute {
 
   void parse_args(int iarg, int narg, char **arg);
   Region *region() const;
-  const StepContacts &contacts_now();
-  void warn_no_normal(const StepContacts &step);
+  const StepSums &sums_now();
+  fabric::ParticleSums particle_sums(bool with_lambda);
+  void warn_no_normal();
   double sample_area();
 };
 

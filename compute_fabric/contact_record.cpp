@@ -1,9 +1,5 @@
 #include "contact_record.h"
 
-#include <algorithm>
-#include <cstdint>
-#include <utility>
-
 namespace fabric {
 
 namespace {
@@ -31,24 +27,6 @@ ContactRecord wall_record(long tag, const double centre[2], const double contact
                           const double force[2], double radius)
 {
   return record(static_cast<double>(tag), -1.0, centre, contact_point, force, radius);
-}
-
-std::vector<int> order_by_tags(const std::vector<double> &records)
-{
-  const int n = static_cast<int>(records.size() / CONTACT_FIELDS);
-  // one 64-bit key per contact sorts faster than comparing doubles; the index
-  // breaks ties, so equal tags keep their order
-  std::vector<std::pair<uint64_t, int>> keys(n);
-  for (int c = 0; c < n; c++) {
-    const double *rec = records.data() + c * CONTACT_FIELDS;
-    // a wall (tag -1) becomes 2^32 - 1: after the particles a touches
-    const uint64_t low = static_cast<uint32_t>(static_cast<int64_t>(rec[TAG_B]));
-    keys[c] = {(static_cast<uint64_t>(rec[TAG_A]) << 32) | low, c};
-  }
-  std::sort(keys.begin(), keys.end());
-  std::vector<int> order(n);
-  for (int c = 0; c < n; c++) order[c] = keys[c].second;
-  return order;
 }
 
 Contact record_contact(const double *record, double lx, double ly)

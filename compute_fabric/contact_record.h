@@ -1,15 +1,11 @@
-// One contact as the ranks exchange it, and the order of the gathered list.
-//
-// A record is plain doubles so that a single MPI_Allgatherv moves every
-// contact; sorting the gathered records by tags makes every statistic sum in
-// the same order on any number of ranks. No LIGGGHTS: fabric_gather.cpp fills
-// the records from LIGGGHTS' computes and turns them into contacts.
+// One contact as read from a row of LIGGGHTS' compute pair/gran/local or
+// wall/gran/local, stored with a = the smaller tag. No LIGGGHTS:
+// fabric_local.cpp fills the records from LIGGGHTS' computes and turns them
+// into contacts.
 #ifndef LIGGGHTS_MEMBRANE_CONTACT_RECORD_H
 #define LIGGGHTS_MEMBRANE_CONTACT_RECORD_H
 
-
 #include <array>
-#include <vector>
 
 #include "fabric_statistics.h"
 
@@ -29,11 +25,6 @@ ContactRecord pair_record(long tag_i, long tag_j, const double x_i[2], const dou
 // A particle-wall contact: the wall is b (tag -1), placed at the contact point.
 ContactRecord wall_record(long tag, const double centre[2], const double contact_point[2],
                           const double force[2], double radius);
-
-// The indices of the records (CONTACT_FIELDS doubles each) in the order of
-// (tag a, tag b), a wall after all the particles a touches; records with the
-// same tags keep their order. Tags must be < 2^31 (LIGGGHTS' are ints).
-std::vector<int> order_by_tags(const std::vector<double> &records);
 
 // The contact of a record, given its branch vector (lx, ly) = x_b - x_a: the
 // caller undoes periodic wraps, which needs the simulation box. The force on b

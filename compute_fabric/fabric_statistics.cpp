@@ -126,7 +126,11 @@ void add_to_bin(Histogram &h, int bin, const Contact &c)
 Contact make_contact(long a, long b, double lx, double ly, double fx, double fy, double radius_sum)
 {
   Contact c{a, b, 0.0, 0.0, 0.0, 0.0, lx, ly};
-  const double length = std::hypot(lx, ly); // no underflow for |l| ~ 1e-300
+  // hypot has no underflow for |l| ~ 1e-300 but is slow; sqrt is exact to an
+  // ulp where the squares neither underflow nor overflow
+  const double squared = lx * lx + ly * ly;
+  const double length =
+      squared > 1e-280 && squared < 1e280 ? std::sqrt(squared) : std::hypot(lx, ly);
   if (!std::isfinite(length) || !(length > kCoincidentFraction * radius_sum)) return c;
   c.nx = lx / length;
   c.ny = ly / length;
@@ -148,7 +152,8 @@ double bin_centre(int bin, int nbins)
 int angle_bin(double angle, int nbins)
 {
   if (!std::isfinite(angle) || nbins < 1) return -1;
-  double wrapped = std::fmod(angle, kTwoPi); // exact
+  // fmod is exact, and the identity for |angle| < 2 pi (atan2's range): skip it there
+  double wrapped = std::fabs(angle) < kTwoPi ? angle : std::fmod(angle, kTwoPi);
   if (wrapped < 0.0) wrapped += kTwoPi;
   if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
   const int bin = static_cast<int>(wrapped / bin_width(nbins));

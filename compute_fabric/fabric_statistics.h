@@ -1,7 +1,9 @@
 // Contact-fabric statistics of a 2D granular sample (spec: shared/spec/fabric.md).
 //
-// Kept free of LIGGGHTS so every formula can be checked against exact cases; the
-// compute style only gathers contacts (once each, across MPI ranks) and calls these.
+// Kept free of LIGGGHTS so every formula can be checked against exact cases. These
+// take the list of all contacts; the compute style fits from partial sums merged
+// over the MPI ranks instead (fabric_sums.h, which reuses the histogram fits and
+// equals the others to round-off).
 #ifndef LIGGGHTS_MEMBRANE_FABRIC_STATISTICS_H
 #define LIGGGHTS_MEMBRANE_FABRIC_STATISTICS_H
 

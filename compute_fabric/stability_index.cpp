@@ -12,9 +12,10 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
+// fmod is exact and slow; the fast paths below give its result bit for bit
 double wrap_to_full_turn(double angle)
 {
-  double wrapped = std::fmod(angle, kTwoPi);
+  double wrapped = std::fabs(angle) < kTwoPi ? angle : std::fmod(angle, kTwoPi);
   if (wrapped < 0.0) wrapped += kTwoPi;
   if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
   return wrapped;
@@ -22,7 +23,10 @@ double wrap_to_full_turn(double angle)
 
 double circular_distance(double alpha, double beta)
 {
-  const double d = std::fabs(std::fmod(alpha - beta, kTwoPi));
+  // |fmod(x, 2 pi)| = fmod(|x|, 2 pi); for 2 pi <= |x| < 4 pi that is |x| - 2 pi,
+  // exact by Sterbenz's lemma (here |x| < 4 pi: both angles in [0, 4 pi))
+  double d = std::fabs(alpha - beta);
+  if (d >= kTwoPi) d = d < 2.0 * kTwoPi ? d - kTwoPi : std::fmod(d, kTwoPi);
   return std::min(d, kTwoPi - d);
 }
 

@@ -4,7 +4,6 @@
 #ifndef LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
 #define LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
 
-
 #include <vector>
 
 namespace fabric {
@@ -19,10 +18,10 @@ double stability_index(std::vector<double> angles);
 
 struct ParticleContacts;
 
-// The sample's lambda: the mean over the particles with >= 2 contacts (with or
-// without a normal), summed in tag order so that it is the same on any number
-// of ranks. with_rattlers: the other particles up to n_particles (0 or 1
-// contact) enter with lambda = 1. 0 when no particle qualifies.
+// The sample's lambda from the list of all contacts (compute fabric sums it per
+// rank instead, fabric_sums.h): the mean over the particles with >= 2 contacts
+// (with or without a normal), summed in tag order. with_rattlers: the other particles up to
+// n_particles (0 or 1 contact) enter with lambda = 1. 0 when no particle qualifies.
 double mean_stability_index(const ParticleContacts &particles, long n_particles,
                             bool with_rattlers);
 

@@ -1,5 +1,5 @@
-// The contact record the ranks exchange (contact_record.h): packing with the
-// smaller tag first, the order of the gathered list, and the contact of a record.
+// The contact record (contact_record.h): packing with the smaller tag first,
+// and the contact of a record.
 #include "contact_record.h"
 
 #include <gtest/gtest.h>
@@ -9,19 +9,6 @@
 namespace {
 
 using fabric::ContactRecord;
-
-std::vector<double> concatenated(const std::vector<ContactRecord> &records)
-{
-  std::vector<double> out;
-  for (const ContactRecord &r : records) out.insert(out.end(), r.begin(), r.end());
-  return out;
-}
-
-// a record of tags (a, b) whose other fields say which one it is
-ContactRecord tagged(double a, double b, double marker)
-{
-  return {a, b, marker, 0, 0, 0, 0, 0, 1};
-}
 
 TEST(PairRecord, SmallerTagFirstIsKept)
 {
@@ -46,30 +33,6 @@ TEST(WallRecord, WallIsTagMinusOneAtTheContactPoint)
   EXPECT_EQ(fabric::wall_record(5, centre, point, f, 0.5), expected);
 }
 
-TEST(OrderByTags, ByTagAThenTagBWallsLast)
-{
-  const std::vector<double> records =
-      concatenated({tagged(5, 9, 0), tagged(2, -1, 1), tagged(2, 8, 2), tagged(2, 3, 3),
-                    tagged(5, -1, 4), tagged(1, 2147483647, 5)});
-  const std::vector<int> expected = {5, 3, 2, 1, 0, 4};
-  EXPECT_EQ(fabric::order_by_tags(records), expected);
-}
-
-// a particle touching two mesh triangles: the same tags twice
-TEST(OrderByTags, EqualTagsKeepTheirOrder)
-{
-  const std::vector<double> records =
-      concatenated({tagged(4, -1, 0), tagged(3, 4, 1), tagged(4, -1, 2), tagged(4, -1, 3)});
-  const std::vector<int> expected = {1, 0, 2, 3};
-  EXPECT_EQ(fabric::order_by_tags(records), expected);
-}
-
-TEST(OrderByTags, NoRecords)
-{
-  EXPECT_TRUE(fabric::order_by_tags({}).empty());
-}
-
-// Force on a (1, -2), so on b (-1, 2); n = (0, 1), t = (-1, 0): fn = 2, ft = 1.
 TEST(RecordContact, ForceOnBIsMinusTheRecordedForceOnA)
 {
   const ContactRecord rec = {3, 7, 0, 0, 0, 1.5, 1, -2, 2};
