@@ -12,15 +12,13 @@ restart=$(readlink -f "${1:-../out/biaxial/prepared.restart}")
 exe=${EXE:-$(readlink -f ../build/app/liggghts-membrane)}
 [ -f "$restart" ] || { echo "no prepared sample $restart: run ./run.sh first"; exit 1; }
 csv=${CSV:-fabric_cost.csv}
+. ./step_time.sh
 echo "ranks,what,ms_per_step" > $csv
 for np in 1 2; do
   for what in 0:none 1:basic 2:full; do
     best=
     for _ in $(seq "${REPEAT:-1}"); do
-      line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.fabric_cost -log none \
-               -var restart "$restart" -var what ${what%%:*} -var nsteps "${NSTEPS:-200}" \
-               -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
-      ms=$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')
+      ms=$(ms_per_step $np in.fabric_cost restart "$restart" what ${what%%:*} nsteps "${NSTEPS:-200}")
       if [ -z "$best" ] || awk "BEGIN {exit !($ms < $best)}"; then best=$ms; fi
     done
     echo "$np,${what#*:},$best" >> $csv

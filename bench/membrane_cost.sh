@@ -16,22 +16,21 @@ nsteps=${2:-3000}
 exe=$(readlink -f ../build/app/liggghts-membrane)
 [ -f "$restart" ] || { echo "no prepared sample $restart: run ./run.sh first"; exit 1; }
 csv=membrane_cost.csv
+. ./step_time.sh
 echo "ranks,lateral,every,ms_per_step" > $csv
 for np in 1 2; do
   for variant in "none 0 1" "kept 1 1000000000" "membrane 1 1" "membrane 1 auto" "membrane 1 10" "rigid 2 1"; do
     set -- $variant
-    line=$(mpirun --allow-run-as-root --oversubscribe -np $np "$exe" -in in.membrane_cost -log none \
-             -var restart "$restart" -var lateral "$2" -var every "$3" -var nsteps "$nsteps" \
-             -var meshdir "$(readlink -f ../examples/biaxial/meshes)" | grep "^Loop time" | tail -1)
-    ms=$(echo "$line" | awk '{printf "%.4f", 1000 * $4 / $9}')
+    ms=$(ms_per_step $np in.membrane_cost restart "$restart" lateral "$2" every "$3" nsteps "$nsteps")
     echo "$np,$1,$3,$ms" >> $csv
   done
 done
 /usr/bin/python3 - "$csv" <<'PY'
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-for np_ in sorted({r["ranks"] for r in rows}):
-    sel = [r for r in rows if r["ranks"] == np_]
+import collections, csv, sys
+by_ranks = collections.defaultdict(list)  # the variants of each rank count, in run order
+for r in csv.DictReader(open(sys.argv[1])):
+    by_ranks[r["ranks"]].append(r)
+for np_, sel in sorted(by_ranks.items()):
     base = float(next(r["ms_per_step"] for r in sel if r["lateral"] == "none"))
     kept = float(next(r["ms_per_step"] for r in sel if r["lateral"] == "kept"))
     print("ranks %s:" % np_)

@@ -267,14 +267,14 @@ ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
 
   const double f0 = chi_n.trace();
   if (!(f0 > 0.0)) return result;
-  const Anisotropy normal = deviator_of(chi_n);
-  const Anisotropy tangential = deviator_of(chi_t);
-  result.an = 2.0 * normal.a / f0;
-  result.theta_n = normal.theta;
-  result.f0 = f0;
-  result.at = 2.0 * tangential.a / f0;
-  result.theta_t = tangential.theta;
-  return result;
+  return force_anisotropy_of(f0, deviator_of(chi_n), deviator_of(chi_t));
+}
+
+ForceAnisotropy force_anisotropy_of(double f0, const Anisotropy &normal,
+                                    const Anisotropy &tangential)
+{
+  return ForceAnisotropy{2.0 * normal.a / f0,     normal.theta,     f0,
+                         2.0 * tangential.a / f0, tangential.theta, 0};
 }
 
 Anisotropies anisotropies(const std::vector<Contact> &contacts, int nbins, Estimator estimator)

@@ -7,7 +7,6 @@
 #ifndef LIGGGHTS_MEMBRANE_FABRIC_STATISTICS_H
 #define LIGGGHTS_MEMBRANE_FABRIC_STATISTICS_H
 
-
 #include <Eigen/Core>
 
 #include <vector>
@@ -115,6 +114,11 @@ struct ForceAnisotropy {
   double theta_t;
   int empty_bins;
 };
+
+// The tensor estimator's force anisotropy from the major axes of the mean
+// normal-force and tangential tensors, f0 the normal one's trace (> 0).
+ForceAnisotropy force_anisotropy_of(double f0, const Anisotropy &normal,
+                                    const Anisotropy &tangential);
 
 // Bin means are independent of how many contacts a bin holds, so no fabric
 // correction is needed here. Empty bins are left out of the sums and f0 is the

@@ -124,25 +124,34 @@ void FabricSums::add(const Contact &c, double theta)
   f_l_yy.add(fy * c.ly);
 }
 
+template <class S> void PackedSums<S>::merge(const S &other)
+{
+  merge_sums(static_cast<S &>(*this), other);
+}
+
+template <class S> std::vector<double> PackedSums<S>::pack() const
+{
+  return pack_sums(static_cast<const S &>(*this));
+}
+
+template <class S> void PackedSums<S>::unpack(const double *packed)
+{
+  unpack_sums(static_cast<S &>(*this), packed);
+}
+
+template struct PackedSums<FabricSums>;
+template struct PackedSums<ForceTensorSums>;
+template struct PackedSums<ParticleSums>;
+
 void FabricSums::merge(const FabricSums &other)
 {
   if (other.nbins != nbins) throw std::invalid_argument("fabric: merging sums of other bins");
-  merge_sums(*this, other);
+  PackedSums<FabricSums>::merge(other);
 }
 
 int FabricSums::pairs() const
 {
   return 9 + 3 * nbins;
-}
-
-std::vector<double> FabricSums::pack() const
-{
-  return pack_sums(*this);
-}
-
-void FabricSums::unpack(const double *packed)
-{
-  unpack_sums(*this, packed);
 }
 
 void ForceTensorSums::add(const Contact &c, const Anisotropy &fabric)
@@ -166,21 +175,6 @@ void ForceTensorSums::add(const Contact &c, const Anisotropy &fabric, double the
   chi_t_yy.add(wt * (c.nx * c.ny));
 }
 
-void ForceTensorSums::merge(const ForceTensorSums &other)
-{
-  merge_sums(*this, other);
-}
-
-std::vector<double> ForceTensorSums::pack() const
-{
-  return pack_sums(*this);
-}
-
-void ForceTensorSums::unpack(const double *packed)
-{
-  unpack_sums(*this, packed);
-}
-
 void ParticleSums::add(long n, double lambda_value)
 {
   particles.add(1.0);
@@ -188,21 +182,6 @@ void ParticleSums::add(long n, double lambda_value)
   if (n == 0) rattlers0.add(1.0);
   if (n == 1) rattlers1.add(1.0);
   if (n >= 2) lambda.add(lambda_value);
-}
-
-void ParticleSums::merge(const ParticleSums &other)
-{
-  merge_sums(*this, other);
-}
-
-std::vector<double> ParticleSums::pack() const
-{
-  return pack_sums(*this);
-}
-
-void ParticleSums::unpack(const double *packed)
-{
-  unpack_sums(*this, packed);
 }
 
 Histogram histogram_of(const FabricSums &sums)
@@ -240,15 +219,9 @@ ForceAnisotropy force_anisotropy_tensor(const ForceTensorSums &sums)
                nyy = sums.chi_n_yy.value() / n;
   const double f0 = nxx + nyy;
   if (!(f0 > 0.0)) return result;
-  const Anisotropy normal = major_axis(nxx, nxy, nyy);
-  const Anisotropy tangential =
-      major_axis(sums.chi_t_xx.value() / n, sums.chi_t_xy.value() / n, sums.chi_t_yy.value() / n);
-  result.an = 2.0 * normal.a / f0;
-  result.theta_n = normal.theta;
-  result.f0 = f0;
-  result.at = 2.0 * tangential.a / f0;
-  result.theta_t = tangential.theta;
-  return result;
+  return force_anisotropy_of(
+      f0, major_axis(nxx, nxy, nyy),
+      major_axis(sums.chi_t_xx.value() / n, sums.chi_t_xy.value() / n, sums.chi_t_yy.value() / n));
 }
 
 Anisotropies anisotropies(const FabricSums &sums, const ForceTensorSums &tensor,

@@ -27,10 +27,19 @@ struct ExactSum {
   double value() const { return hi + lo; }
 };
 
+// merge, pack and unpack of a struct of ExactSums (fabric_sums.cpp lists the
+// fields of each): pack() gives all sums as (hi, lo) pairs, 2 * pairs()
+// doubles, and unpack of a packed array gives them back exactly.
+template <class S> struct PackedSums {
+  void merge(const S &other);
+  std::vector<double> pack() const;
+  void unpack(const double *packed);
+};
+
 // The sums over the contacts (with walls: and wall contacts) of one rank or of
 // the sample. Counts are kept as ExactSum too (exact up to 2^53) so that the
 // whole struct packs into pairs of doubles.
-struct FabricSums {
+struct FabricSums : PackedSums<FabricSums> {
   explicit FabricSums(int nbins = 18);
 
   int nbins;
@@ -48,32 +57,24 @@ struct FabricSums {
   // a bin edge). theta = atan2(ny, nx) when the caller has it already.
   void add(const Contact &c);
   void add(const Contact &c, double theta);
-  void merge(const FabricSums &other);
-
-  // all sums as (hi, lo) pairs, 2 * pairs() doubles; unpack of a packed array
-  // of the same nbins gives the sums back exactly
+  void merge(const FabricSums &other); // of the same nbins
   int pairs() const;
-  std::vector<double> pack() const;
-  void unpack(const double *packed);
 };
 
 // The tensor estimator's force sums, a second pass over the contacts once the
 // fabric fit is known (each contact is divided by its fabric density w).
-struct ForceTensorSums {
+struct ForceTensorSums : PackedSums<ForceTensorSums> {
   ExactSum with_normal; // N_n, including the contacts skipped for w <= 0
   ExactSum chi_n_xx, chi_n_xy, chi_n_yy, chi_t_xx, chi_t_xy, chi_t_yy; // sums, not / N_n
 
   void add(const Contact &c, const Anisotropy &fabric);
   void add(const Contact &c, const Anisotropy &fabric, double theta); // theta as above
-  void merge(const ForceTensorSums &other);
   int pairs() const { return 7; }
-  std::vector<double> pack() const;
-  void unpack(const double *packed);
 };
 
 // The per-particle sums: contact counts and the stability index, over the
 // particles of the group (and region).
-struct ParticleSums {
+struct ParticleSums : PackedSums<ParticleSums> {
   ExactSum particles;            // N_p
   ExactSum contact_ends;         // sum of the contact counts (2 N_c without walls)
   ExactSum rattlers0, rattlers1; // N_0, N_1
@@ -82,10 +83,7 @@ struct ParticleSums {
   // a particle with `contacts` contacts and stability index `lambda` (used only
   // for >= 2 contacts)
   void add(long contacts, double lambda_value);
-  void merge(const ParticleSums &other);
   int pairs() const { return 5; }
-  std::vector<double> pack() const;
-  void unpack(const double *packed);
 };
 
 // The fits from reduced sums; each equals the function of fabric_statistics.h

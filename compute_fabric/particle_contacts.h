@@ -5,7 +5,6 @@
 #ifndef LIGGGHTS_MEMBRANE_PARTICLE_CONTACTS_H
 #define LIGGGHTS_MEMBRANE_PARTICLE_CONTACTS_H
 
-
 #include <vector>
 
 #include "fabric_statistics.h"
