@@ -5,7 +5,10 @@
 #
 #   ./run.sh                 published size (75 x 150 mm, 8 404 disks), 10 % axial strain
 #   ./run.sh --quick         a quarter-size sample (526 disks), 2 % strain: about a minute
-#   ./run.sh --scale S       linear scale of the published sample (0.25: 526 disks, 0.5: 2 100)
+#   ./run.sh --scale S       linear scale of the published sample, S >= 0.1: about 8 404 S^2 disks
+#                            (0.25: 526, 0.5: 2 100, 2: 33 614, 4: 134 455, 8: 537 817); box,
+#                            meshes and box z extent follow S (examples/biaxial/README.md,
+#                            "Any sample size"); results in out/biaxial/scale<S>_seed<seed>/
 #   ./run.sh --paper         the published procedure as closely as LIGGGHTS allows (doc/paper_preset.md):
 #                            2 %/min, PFC local damping alpha 0.7, side-wall servo without
 #                            feed-forward; writes restart files and resumes an interrupted
@@ -49,6 +52,8 @@ while [ $# -gt 0 ]; do
   shift
 done
 [[ "$samples" =~ ^[1-9][0-9]*$ ]] || { echo "--samples needs a positive integer, not '$samples'"; exit 2; }
+/usr/bin/python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) >= 0.1 else 1)" "$scale" 2>/dev/null \
+  || { echo "--scale needs a number >= 0.1 (the meshes' ghost images in z, examples/biaxial/README.md), not '$scale'"; exit 2; }
 
 tools/install-deps.sh
 tools/build.sh >/dev/null

@@ -100,6 +100,10 @@ def main():
     p.add_argument("--margin", type=float, default=0.3,
                    help="simulation box beyond the walls, as a fraction of width/height (0.3): "
                         "room for the side walls to move out")
+    p.add_argument("--zhalf", type=float, default=None,
+                   help="half z extent of the thin periodic box [m] (default 0.05 x scale: the z extent "
+                        "of the wall meshes, examples/biaxial/make_meshes.py, which in.prepare scales "
+                        "with the sample; in.prepare refuses a data file whose box differs)")
     p.add_argument("--ntypes", type=int, default=3,
                    help="atom types declared (3): 1 = soil, 2 = membrane (reserved), 3 = walls")
     p.add_argument("--max-tries", type=int, default=100000)
@@ -123,6 +127,12 @@ def main():
     cm = np.cumsum(d[order] ** 2)
     d50 = d[order][np.searchsorted(cm, 0.5 * cm[-1])]
     mx, my = a.margin * width, a.margin * height
+    # z: the box must follow the meshes (their z extent scales with the sample): LIGGGHTS
+    # bins the mesh elements, and their periodic ghost images in z, over the box only
+    # (surface_mesh_I.h, RegionNeighborList); with a box thinner than the elements
+    # (rBound > box z) it makes ghost images two periods away, outside the bins, and
+    # aborts with "assertion failed (./src/region_neighbor_list_I.h:165)"
+    zhalf = a.zhalf if a.zhalf is not None else 0.05 * a.scale
     with open(a.out, "w") as f:
         f.write("LIGGGHTS data: %d disks at HALF size, uniform by mass %g-%g m (full), box %g x %g m, "
                 "seed %d, scale %g, full-size porosity %.6f, half-size porosity %.6f, D50(mass) %.6g m, "
@@ -132,7 +142,7 @@ def main():
         f.write("%d atom types\n\n" % a.ntypes)
         f.write("%.9g %.9g xlo xhi\n" % (-mx, width + mx))
         f.write("%.9g %.9g ylo yhi\n" % (-my, height + my))
-        f.write("-0.05 0.05 zlo zhi\n\n")
+        f.write("%.9g %.9g zlo zhi\n\n" % (-zhalf, zhalf))
         f.write("Atoms\n\n")
         for i in range(n):
             f.write("%d 1 %.9g %.9g %.9g %.9g 0\n" % (i + 1, 2 * rhalf[i], a.density, pos[i, 0], pos[i, 1]))

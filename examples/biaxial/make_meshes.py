@@ -6,8 +6,10 @@ W = 0.075 m, H = 0.150 m; z extent +-0.05 m (thin periodic z of the 2D box).
 The platens (bottom, top) reach 20 % of W beyond each side wall and the side walls
 20 % of H beyond each platen, so the corners stay closed while walls move; all nodes
 stay inside the simulation box written by scripts/generate_sample.py (margin 30 %).
-in.prepare loads them with `scale ${scale}` for smaller samples (the z extent scales
-too; it stays far larger than the largest disk radius, 1.5 mm).
+in.prepare loads them with `scale ${scale}` for any sample size (the z extent scales
+too; it stays far larger than the largest disk radius, 1.5 mm, at scale >= 0.1), and
+scripts/generate_sample.py gives the box the same z extent, +-0.05 m x scale: LIGGGHTS
+needs the box z extent to follow the meshes' (in.prepare explains why and checks it).
 
 Each wall is cut into strips of at most --seg (15 mm) along its length, two triangles
 each: LIGGGHTS 3.8 aborts with "assertion failed (./src/region_neighbor_list_I.h:165)"
