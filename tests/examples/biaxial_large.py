@@ -25,7 +25,7 @@ import subprocess
 import sys
 import tempfile
 
-from example_run import ROOT, run
+from example_run import Checks, ROOT, run, table
 
 NATOMS = 33614
 # a brief preparation (5 000 steps): 25 growth stages of 80 steps under 10 x the viscous
@@ -37,23 +37,11 @@ PREPARE = ["-var", "nstage", "25", "-var", "nsgrow", "80", "-var", "gvisc", "200
 SHEAR = ["-var", "nsettle", "300", "-var", "interrupt", "300", "-var", "nout", "100", "-var", "ndump", "100000"]
 
 
-def table(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    cols = [l for l in lines if l.startswith("#")][-1].lstrip("#").split()
-    rows = [list(map(float, l.split())) for l in lines if l and not l.startswith("#")]
-    return {c: [r[k] for r in rows] for k, c in enumerate(cols)}
-
-
 def main():
     exe, np_ = os.path.abspath(sys.argv[1]), sys.argv[2]
     mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe]
-    failures = []
-
-    def check(ok, what):
-        print("%s %s" % ("ok  " if ok else "FAIL", what))
-        if not ok:
-            failures.append(what)
+    check = Checks()
+    failures = check.failures
 
     with tempfile.TemporaryDirectory() as work:
         data, restart = os.path.join(work, "sample.data"), os.path.join(work, "prepared.restart")

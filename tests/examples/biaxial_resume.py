@@ -24,7 +24,7 @@ import tempfile
 
 import numpy as np
 
-from example_run import ROOT, run
+from example_run import Checks, ROOT, run
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 from biaxial import readers, resume  # noqa: E402
 
@@ -37,12 +37,8 @@ TOLERANCE = {"membrane": 1e-10, "rigid": 1e-10}
 def main():
     exe, np_ = os.path.abspath(sys.argv[1]), sys.argv[2]
     mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe, "-log", "none"]
-    failures = []
-
-    def check(ok, what):
-        print(("ok   " if ok else "FAIL ") + what)
-        if not ok:
-            failures.append(what)
+    check = Checks()
+    failures = check.failures
 
     with tempfile.TemporaryDirectory() as tmp:
         data, restart = os.path.join(tmp, "sample.data"), os.path.join(tmp, "prepared.restart")

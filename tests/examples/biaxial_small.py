@@ -33,7 +33,7 @@ import subprocess
 import sys
 import tempfile
 
-from example_run import ROOT, run
+from example_run import Checks, ROOT, run, table
 
 
 def fields(line):
@@ -49,28 +49,16 @@ def fields(line):
     return out
 
 
-def table(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    cols = [l for l in lines if l.startswith("#")][-1].lstrip("#").split()
-    rows = [list(map(float, l.split())) for l in lines if l and not l.startswith("#")]
-    return {c: [r[k] for r in rows] for k, c in enumerate(cols)}
-
-
 def main():
     exe, np_ = os.path.abspath(sys.argv[1]), sys.argv[2]
     mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe]
-    failures = []
+    check = Checks()
+    failures = check.failures
 
     def check_quiet_guards(out, run_name):
         said = [l.strip() for l in out.splitlines()
                 if l.startswith("WARNING: Fix stability/guard") or l.startswith("WARNING: Fix membrane2d")]
         check(not said, "%s: no guard warning%s" % (run_name, (" (got: %s)" % said[0]) if said else ""))
-
-    def check(ok, what):
-        print("%s %s" % ("ok  " if ok else "FAIL", what))
-        if not ok:
-            failures.append(what)
 
     with tempfile.TemporaryDirectory() as work:
         data, restart = os.path.join(work, "sample.data"), os.path.join(work, "prepared.restart")
