@@ -202,16 +202,19 @@ Region *ComputeFabric::region() const
    with estimator tensor, whose force sums need the fabric fit first)
 ------------------------------------------------------------------------- */
 
-const ComputeFabric::StepSums &ComputeFabric::sums_now()
+const ComputeFabric::StepSums &ComputeFabric::sums_now(bool with_angles)
 {
-  if (current.step == update->ntimestep) return current;
+  with_angles = with_angles || stability_flag;
+  if (current.step == update->ntimestep && (current.with_angles || !with_angles)) return current;
   current.step = update->ntimestep;
-  const int left = contact_source.collect(region());
+  current.with_angles = with_angles;
+  const int left = contact_source.collect(region(), with_angles);
 
   current.sums = fabric::FabricSums(nbins);
   const std::vector<fabric::Contact> &contacts = contact_source.contacts();
   const std::vector<double> &theta = contact_source.angles();
-  for (size_t k = 0; k < contacts.size(); k++) current.sums.add(contacts[k], theta[k]);
+  for (size_t k = 0; k < contacts.size(); k++)
+    theta.empty() ? current.sums.add(contacts[k]) : current.sums.add(contacts[k], theta[k]);
   current.particles = particle_sums(stability_flag);
   if (contact_source.reduce(current.sums, current.particles, left)) {
     // a ghost had more contact angles than one round carries: all of them first
@@ -225,7 +228,9 @@ const ComputeFabric::StepSums &ComputeFabric::sums_now()
   if (estimator == fabric::Estimator::Tensor) {
     const fabric::Anisotropy fabric = fabric::normal_anisotropy_tensor(current.sums);
     current.tensor = fabric::ForceTensorSums();
-    for (size_t k = 0; k < contacts.size(); k++) current.tensor.add(contacts[k], fabric, theta[k]);
+    for (size_t k = 0; k < contacts.size(); k++)
+      theta.empty() ? current.tensor.add(contacts[k], fabric)
+                    : current.tensor.add(contacts[k], fabric, theta[k]);
     std::vector<double> packed = current.tensor.pack();
     contact_source.reduce(packed);
     current.tensor.unpack(packed.data());
@@ -244,9 +249,8 @@ fabric::ParticleSums ComputeFabric::particle_sums(bool with_lambda)
   Region *selected_region = region();
   for (int i = 0; i < atom->nlocal; i++) {
     if (!atom_selected(atom, i, groupbit, selected_region)) continue;
-    const std::vector<double> &angles = contact_source.ends_of(i);
-    if (with_lambda) current.lambda[i] = fabric::stability_index(angles);
-    p.add(static_cast<long>(angles.size()), with_lambda ? current.lambda[i] : 0.0);
+    if (with_lambda) current.lambda[i] = fabric::stability_index(contact_source.ends_of(i));
+    p.add(contact_source.count_of(i), with_lambda ? current.lambda[i] : 0.0);
   }
   return p;
 }
@@ -304,7 +308,7 @@ double ComputeFabric::sample_area()
 void ComputeFabric::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  const StepSums &step = sums_now();
+  const StepSums &step = sums_now(false);
 
   std::fill(vector, vector + VECTOR_SIZE, 0.0);
   const fabric::Anisotropies an = fabric::anisotropies(step.sums, step.tensor, estimator);
@@ -340,7 +344,7 @@ void ComputeFabric::compute_vector()
 void ComputeFabric::compute_array()
 {
   invoked_array = update->ntimestep;
-  const fabric::Histogram hist = fabric::histogram_of(sums_now().sums);
+  const fabric::Histogram hist = fabric::histogram_of(sums_now(false).sums);
   for (int g = 0; g < nbins; g++) {
     array[g][0] = fabric::bin_centre(g, nbins) * RAD2DEG;
     array[g][1] = hist.count[g];
@@ -357,7 +361,7 @@ void ComputeFabric::compute_array()
 void ComputeFabric::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
-  sums_now();
+  sums_now(true);
   if (!current.have_lambda) particle_sums(true);
 
   if (atom->nmax > nmax_atom) {
@@ -369,7 +373,7 @@ void ComputeFabric::compute_peratom()
   for (int i = 0; i < atom->nlocal; i++) {
     array_atom[i][0] = array_atom[i][1] = 0.0;
     if (!atom_selected(atom, i, groupbit, selected_region)) continue;
-    array_atom[i][0] = static_cast<double>(contact_source.ends_of(i).size());
+    array_atom[i][0] = contact_source.count_of(i);
     array_atom[i][1] = current.lambda[i];
   }
 }

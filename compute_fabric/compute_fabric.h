@@ -88,6 +88,7 @@ class ComputeFabric : public Compute {
     fabric::ParticleSums particles; // lambda only with stability yes
     std::vector<double> lambda;     // per local atom, when computed
     bool have_lambda = false;
+    bool with_angles = false;       // contact angles per particle collected
   } current;
   bool warned_no_normal;
 
@@ -95,7 +96,9 @@ class ComputeFabric : public Compute {
 
   void parse_args(int iarg, int narg, char **arg);
   Region *region() const;
-  const StepSums &sums_now();
+  // the sums of this step; with_angles: the per-particle contact angles too
+  // (for lambda), else counts only (cheaper, less communication)
+  const StepSums &sums_now(bool with_angles);
   fabric::ParticleSums particle_sums(bool with_lambda);
   void warn_no_normal();
   double sample_area();

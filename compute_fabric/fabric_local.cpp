@@ -187,17 +187,21 @@ void FabricLocal::create_source(ContactSource &src, const char *suffix)
    owner (wall/gran/local reports local particles only).
 ------------------------------------------------------------------------- */
 
-int FabricLocal::collect(Region *region)
+int FabricLocal::collect(Region *region, bool angles_wanted)
 {
   // Ghost velocities date from the start of the step; the contact model's
   // damping terms need the current ones, or a contact across a processor
   // boundary would differ from the same contact inside one rank.
   bool refreshed = false;
+  with_angles = angles_wanted;
   local.clear();
   theta.clear();
   const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(ends.size()) < nall) ends.resize(nall);
-  for (int i = 0; i < nall; i++) ends[i].clear();
+  counts.assign(nall, 0);
+  if (with_angles) {
+    if (static_cast<int>(ends.size()) < nall) ends.resize(nall);
+    for (int i = 0; i < nall; i++) ends[i].clear();
+  }
   for (ContactSource *src : {&pairs, &walls}) {
     if (!src->compute) continue;
     if (src->compute->invoked_local != update->ntimestep) {
@@ -214,6 +218,9 @@ int FabricLocal::collect(Region *region)
 void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
 {
   local.push_back(c);
+  counts[index_a]++;
+  if (index_b >= 0) counts[index_b]++;
+  if (!with_angles) return;
   // a contact without a normal counts for both particles but has no angle
   const double angle = has_normal(c) ? std::atan2(c.ny, c.nx) : NAN;
   theta.push_back(angle);
@@ -266,16 +273,18 @@ void FabricLocal::add_rows(const ContactSource &src, bool wall, Region *region)
 }
 
 /* ----------------------------------------------------------------------
-   The angles gathered at a ghost go to its owner by LIGGGHTS' reverse
-   communication (every ghost copy reaches the owner, through the copies a
-   corner ghost is made from). One round carries up to END_SLOTS - 1 angles
-   per ghost; usually one round is enough (the flag whether more are needed
-   travels with the sums, reduce), else finish_ends repeats them.
+   The counts (and angles) gathered at a ghost go to its owner by LIGGGHTS'
+   reverse communication (every ghost copy reaches the owner, through the
+   copies a corner ghost is made from): one double per ghost without angles,
+   else END_SLOTS. One round carries up to END_SLOTS - 1 angles per ghost;
+   usually one round is enough (the flag whether more are needed travels with
+   the sums, reduce), else finish_ends repeats them.
 ------------------------------------------------------------------------- */
 
 int FabricLocal::send_ends_round()
 {
   comm->reverse_comm_compute(owner);
+  if (!with_angles) return 0;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   for (int i = nlocal; i < nall; i++)
     if (sent[i] < static_cast<int>(ends[i].size())) return 1;
@@ -294,6 +303,10 @@ void FabricLocal::finish_ends()
 
 int FabricLocal::pack_ends(int n, int first, double *buf)
 {
+  if (!with_angles) {
+    for (int i = first; i < first + n; i++) buf[i - first] = counts[i];
+    return 1;
+  }
   for (int i = first; i < first + n; i++) {
     double *slot = buf + (i - first) * END_SLOTS;
     const int k = std::min(END_SLOTS - 1, static_cast<int>(ends[i].size()) - sent[i]);
@@ -307,8 +320,13 @@ int FabricLocal::pack_ends(int n, int first, double *buf)
 void FabricLocal::unpack_ends(int n, const int *list, const double *buf)
 {
   for (int m = 0; m < n; m++) {
+    if (!with_angles) {
+      counts[list[m]] += static_cast<int>(buf[m]);
+      continue;
+    }
     const double *slot = buf + m * END_SLOTS;
     const int k = static_cast<int>(slot[0]);
+    counts[list[m]] += k;
     ends[list[m]].insert(ends[list[m]].end(), slot + 1, slot + 1 + k);
   }
 }
@@ -360,5 +378,5 @@ double FabricLocal::memory_usage() const
   double bytes = static_cast<double>(local.capacity()) * sizeof(Contact);
   bytes += theta.capacity() * sizeof(double);
   for (const std::vector<double> &e : ends) bytes += e.capacity() * sizeof(double);
-  return bytes + sent.capacity() * sizeof(int);
+  return bytes + (sent.capacity() + counts.capacity()) * sizeof(int);
 }

@@ -50,18 +50,22 @@ class FabricLocal : protected Pointers {
   void init(bool with_walls);
 
   // this rank's contacts between selected particles (with walls: and a wall),
-  // a = the smaller tag, and the contact angles of their ends by local index
-  // (ghosts included), then one round of sending the ghosts' angles to their
-  // owners; 1 if this rank has angles left to send (then finish_ends), else 0
-  int collect(Region *region);
+  // a = the smaller tag, and the contact count of their ends by local index
+  // (ghosts included) -- with_angles: also their contact angles --, then one
+  // round of sending the ghosts' counts (angles) to their owners; 1 if this rank
+  // has angles left to send (then finish_ends), else 0. The same with_angles on
+  // every rank.
+  int collect(Region *region, bool with_angles);
   // the rounds until no rank has angles left (collective)
   void finish_ends();
   const std::vector<fabric::Contact> &contacts() const { return local; }
-  // atan2(ny, nx) of each contact (NaN without a normal)
+  // atan2(ny, nx) of each contact (NaN without a normal), after a collect
+  // with_angles (else empty)
   const std::vector<double> &angles() const { return theta; }
 
-  // the angles (NaN: no normal) of the counted contacts of owned atom i < nlocal,
-  // those seen on other ranks included (after collect)
+  // the number of counted contacts of owned atom i < nlocal, those seen on other
+  // ranks included, and (after a collect with_angles) their angles (NaN: no normal)
+  int count_of(int i) const { return counts[i]; }
   const std::vector<double> &ends_of(int i) const { return ends[i]; }
 
   // merge the ranks' partial sums (pairs of doubles, see fabric_sums.h) in place,
@@ -91,7 +95,9 @@ class FabricLocal : protected Pointers {
   ContactSource pairs{"pair/gran/local"}, walls{"wall/gran/local"};
   std::vector<fabric::Contact> local;
   std::vector<double> theta;             // per contact, see angles()
-  std::vector<std::vector<double>> ends; // by local index, up to nall
+  bool with_angles = false;              // of the last collect
+  std::vector<int> counts;               // contact ends by local index, up to nall
+  std::vector<std::vector<double>> ends; // their angles, with_angles
   std::vector<int> sent;                 // ends of a ghost already sent to its owner
   MPI_Datatype pair_type;                // (hi, lo) of an ExactSum
   MPI_Op merge_op;

@@ -160,6 +160,39 @@ int angle_bin(double angle, int nbins)
   return bin < nbins ? bin : nbins - 1; // wrapped / width can round up to nbins
 }
 
+NormalBins::NormalBins(int nbins) : nbins_(nbins)
+{
+  if (nbins < 2 || nbins % 2 != 0) throw std::invalid_argument("fabric: NormalBins needs an even nbins");
+  for (int k = 0; k < nbins / 2; ++k) {
+    edge_x_.push_back(std::cos(k * bin_width(nbins)));
+    edge_y_.push_back(std::sin(k * bin_width(nbins)));
+  }
+}
+
+int NormalBins::bin(double nx, double ny) const
+{
+  // A unit normal at angle theta and an edge at angle e: cross = sin(theta - e),
+  // with an error of a few 1e-16; angle_bin(atan2) is as close to the true
+  // bin. Beyond this margin both give the true bin.
+  constexpr double kMargin = 1e-12;
+  if (!(std::fabs(ny) > kMargin)) return angle_bin(std::atan2(ny, nx), nbins_);
+  // the lower half plane is the upper one turned by pi: nbins / 2 bins further
+  const bool lower = ny < 0.0;
+  const double px = lower ? -nx : nx, py = lower ? -ny : ny;
+  int lo = 0, hi = nbins_ / 2; // angle in [lo w, hi w)
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    const double cross = edge_x_[static_cast<std::size_t>(mid)] * py -
+                         edge_y_[static_cast<std::size_t>(mid)] * px;
+    if (!(std::fabs(cross) > kMargin)) return angle_bin(std::atan2(ny, nx), nbins_);
+    if (cross > 0.0)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lower ? lo + nbins_ / 2 : lo;
+}
+
 MissingNormals missing_normals(const std::vector<Contact> &contacts)
 {
   MissingNormals missing{0, -1};

@@ -91,11 +91,15 @@ FabricSums::FabricSums(int n)
 {
   if (n < 3 || n == 4)
     throw std::invalid_argument("fabric: nbins must be >= 3 and != 4"); // as polar_histogram
+  if (n % 2 == 0) normal_bins.emplace_back(n);
 }
 
 void FabricSums::add(const Contact &c)
 {
-  add(c, std::atan2(c.ny, c.nx));
+  if (normal_bins.empty() || !has_normal(c)) return add(c, std::atan2(c.ny, c.nx));
+  contacts.add(1.0);
+  const int bin = normal_bins[0].bin(c.nx, c.ny);
+  add_to_bins(c, bin, (bin + nbins / 2) % nbins);
 }
 
 void FabricSums::add(const Contact &c, double theta)
@@ -108,6 +112,11 @@ void FabricSums::add(const Contact &c, double theta)
   const int bin = angle_bin(theta, nbins);
   const int opposite = nbins % 2 == 0 ? (bin < 0 ? -1 : (bin + nbins / 2) % nbins)
                                       : angle_bin(std::atan2(-c.ny, -c.nx), nbins);
+  add_to_bins(c, bin, opposite);
+}
+
+void FabricSums::add_to_bins(const Contact &c, int bin, int opposite)
+{
   for (int b : {bin, opposite}) {
     if (b < 0) continue;
     bin_count[static_cast<std::size_t>(b)].add(1.0);

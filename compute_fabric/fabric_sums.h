@@ -54,11 +54,16 @@ struct FabricSums : PackedSums<FabricSums> {
   // love_weber_stress do with a list). With an even nbins the bin of -n is the
   // bin of n plus nbins/2, so the histogram is point-symmetric exactly (the
   // list's polar_histogram bins -n by its own angle: the same but for angles on
-  // a bin edge). theta = atan2(ny, nx) when the caller has it already.
+  // a bin edge). theta = atan2(ny, nx) when the caller has it already; without
+  // it an even nbins bins n by NormalBins (the same bin, no atan2).
   void add(const Contact &c);
   void add(const Contact &c, double theta);
   void merge(const FabricSums &other); // of the same nbins
   int pairs() const;
+
+ private:
+  void add_to_bins(const Contact &c, int bin, int opposite);
+  std::vector<NormalBins> normal_bins; // one for an even nbins
 };
 
 // The tensor estimator's force sums, a second pass over the contacts once the

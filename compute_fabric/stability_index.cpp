@@ -30,35 +30,66 @@ double circular_distance(double alpha, double beta)
   return std::min(d, kTwoPi - d);
 }
 
-// Misfit of the sorted contacts against the even arrangement anchored at one of them.
-double misfit_from_anchor(const std::vector<double> &sorted, std::size_t anchor)
+// Misfit of the contacts (sorted, then repeated once: ring[j + n] = ring[j])
+// against the even arrangement anchored at ring[anchor]; stops early, with a
+// value >= bound, once the sum reaches `bound` (the sum only grows, so such an
+// anchor cannot give the minimum).
+double misfit_from_anchor(const double *ring, std::size_t n, std::size_t anchor, double bound)
 {
-  const std::size_t n = sorted.size();
   const double spacing = kTwoPi / static_cast<double>(n);
   double total = 0.0;
-  for (std::size_t k = 1; k < n; ++k) { // k = 0 is the anchor itself: distance 0
-    const double ideal = sorted[anchor] + static_cast<double>(k) * spacing;
-    total += circular_distance(sorted[(anchor + k) % n], ideal);
+  for (std::size_t k = 1; k < n && total < bound; ++k) { // k = 0 is the anchor itself
+    const double ideal = ring[anchor] + static_cast<double>(k) * spacing;
+    total += circular_distance(ring[anchor + k], ideal);
   }
   return total;
 }
 
+// Sorts in place; a particle has a handful of contacts: insertion sort.
+void sort_small(double *a, std::size_t n)
+{
+  for (std::size_t i = 1; i < n; ++i) {
+    const double x = a[i];
+    std::size_t j = i;
+    for (; j > 0 && a[j - 1] > x; --j) a[j] = a[j - 1];
+    a[j] = x;
+  }
+}
+
 } // namespace
 
-double stability_index(std::vector<double> angles)
+double stability_index(const double *angles, std::size_t n)
 {
+  // called once per particle at every output: no allocation below SMALL contacts
+  constexpr std::size_t SMALL = 32;
+  double small[2 * SMALL];
+  std::vector<double> large;
+  double *wrapped = small;
+  if (n > SMALL) {
+    large.resize(2 * n);
+    wrapped = large.data();
+  }
   // a contact without a normal (NaN angle) has no place on the circle
-  angles.erase(std::remove_if(angles.begin(), angles.end(),
-                              [](double angle) { return !std::isfinite(angle); }),
-               angles.end());
-  if (angles.size() < 2) return 1.0;
-  for (double &angle : angles) angle = wrap_to_full_turn(angle);
-  std::sort(angles.begin(), angles.end());
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    if (std::isfinite(angles[k])) wrapped[m++] = wrap_to_full_turn(angles[k]);
+  if (m < 2) return 1.0;
+  if (m <= SMALL)
+    sort_small(wrapped, m);
+  else
+    std::sort(wrapped, wrapped + m);
+
+  std::copy(wrapped, wrapped + m, wrapped + m);
 
   double smallest = std::numeric_limits<double>::infinity();
-  for (std::size_t anchor = 0; anchor < angles.size(); ++anchor)
-    smallest = std::min(smallest, misfit_from_anchor(angles, anchor));
+  for (std::size_t anchor = 0; anchor < m; ++anchor)
+    smallest = std::min(smallest, misfit_from_anchor(wrapped, m, anchor, smallest));
   return smallest / kTwoPi;
+}
+
+double stability_index(const std::vector<double> &angles)
+{
+  return stability_index(angles.data(), angles.size());
 }
 
 double mean_stability_index(const ParticleContacts &particles, long n_particles, bool with_rattlers)
@@ -68,8 +99,8 @@ double mean_stability_index(const ParticleContacts &particles, long n_particles,
   long n = 0;
   for (std::size_t t = 0; t + 1 < first.size(); ++t) {
     if (first[t + 1] - first[t] < 2) continue;
-    sum += stability_index(std::vector<double>(particles.angles.begin() + first[t],
-                                               particles.angles.begin() + first[t + 1]));
+    sum += stability_index(particles.angles.data() + first[t],
+                           static_cast<std::size_t>(first[t + 1] - first[t]));
     ++n;
   }
   if (with_rattlers) {

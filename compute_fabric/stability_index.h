@@ -4,6 +4,7 @@
 #ifndef LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
 #define LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
 
+#include <cstddef>
 #include <vector>
 
 namespace fabric {
@@ -11,10 +12,11 @@ namespace fabric {
 // lambda = D / 2pi, D the smallest total circular misfit between the contacts
 // and n evenly spaced positions anchored at one of them, matched in circular
 // order. 0 for an evenly spaced arrangement; larger means less stable.
-// angles: radians about the particle's centre, any order and any range (taken by
-// value because they are normalised and sorted in place). NaN or infinite angles
-// (contacts without a normal) are left out; 0 or 1 remaining contact -> 1.
-double stability_index(std::vector<double> angles);
+// angles: radians about the particle's centre, any order and any range. NaN or
+// infinite angles (contacts without a normal) are left out; 0 or 1 remaining
+// contact -> 1.
+double stability_index(const double *angles, std::size_t n);
+double stability_index(const std::vector<double> &angles);
 
 struct ParticleContacts;
 

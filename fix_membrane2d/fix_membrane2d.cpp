@@ -176,8 +176,6 @@ void FixMembrane2d::evaluate_platens()
   check_platens_order(lmp, PREFIX, ylo_in, ylo, yhi);
 }
 
-/* ---------------------------------------------------------------------- */
-
 void FixMembrane2d::setup_pre_force(int vflag)
 {
   evaluate_platens();
@@ -226,6 +224,7 @@ void FixMembrane2d::setup(int vflag)
 // the chain is frictionless in this very step
 void FixMembrane2d::pre_force(int)
 {
+  const ScopedSeconds timing(gather.fix_seconds());
   evaluate_platens();
   const int every = definition.detect_every;
   bool detect = run.force_detection || (!detect_auto() && update->ntimestep % every == 0);
@@ -309,10 +308,9 @@ void FixMembrane2d::gather_watched()
   watched = gather.watched(watch_list, chains, detect_auto(), sides);
 }
 
-/* ---------------------------------------------------------------------- */
-
 void FixMembrane2d::post_force(int)
 {
+  const ScopedSeconds timing(gather.fix_seconds());
   pressure = pressure_in.evaluate_checked(lmp, PREFIX, "pressure", true);
   // positions of the chain disks: gathered in pre_force (they do not move in between)
   for (int k = LEFT; k <= RIGHT; k++)

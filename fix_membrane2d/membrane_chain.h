@@ -230,6 +230,10 @@ class BandSlices {
   void finish();
   // Outermost extent of the slice of y and its two neighbours.
   double outer_edge_near(double y) const;
+  // The same for a slice index (after finish(): a lookup), and the slice count.
+  double edge_near_slice(int slice) const { return edge_of_slice(slice); }
+  int count() const { return static_cast<int>(extent_.size()); }
+  Side side() const { return side_; }
   // True when the disk reaches to within `width` of outer_edge_near(y), i.e.
   // x + r >= edge - width (Right), x - r <= edge + width (Left).
   bool contains(double x, double y, double r, double width) const;

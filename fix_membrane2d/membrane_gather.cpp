@@ -7,7 +7,9 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include "allgather.h"
@@ -26,41 +28,52 @@ enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
 enum WatchField { W_TAG, W_X, W_Y, W_R, W_STEP, W_TYPE, WATCH_FIELDS };
 } // namespace
 
+ScopedSeconds::ScopedSeconds(double &total) : total_(total), start_(MPI_Wtime()) {}
+
+ScopedSeconds::~ScopedSeconds()
+{
+  total_ += MPI_Wtime() - start_;
+}
+
 void MembraneGather::bands(const membrane::Platens &platens, double width, const bool active[2],
                            MembraneSideData (&sides)[2])
 {
-  // One pass over the local disks for both sides: the slices are the same.
-  for (int k = LEFT; k <= RIGHT; k++)
-    if (active[k]) sides[k].slices.reset(k == LEFT ? Side::Left : Side::Right, platens, width);
-  const membrane::BandSlices &slicing = sides[active[LEFT] ? LEFT : RIGHT].slices;
-  double **x = atom->x;
-  double *radius = atom->radius;
+  // One pass over the local disks (or the candidates) for both sides: the
+  // slices are the same.
+  const membrane::BandSlices *slices[2] = {active[LEFT] ? &sides[LEFT].slices : nullptr,
+                                           active[RIGHT] ? &sides[RIGHT].slices : nullptr};
+  const bool cached = candidates_usable(width, active);
+  const std::vector<int> &cands = candidates_.candidates();
   const int nlocal = atom->nlocal;
-  slice_of_atom_.resize(nlocal);
-  for (int i = 0; i < nlocal; i++) {
-    if (!(atom->mask[i] & groupbit_)) continue;
-    const int slice = slicing.slice_of(x[i][1]);
-    slice_of_atom_[i] = slice;
-    for (int k = LEFT; k <= RIGHT; k++)
-      if (active[k]) sides[k].slices.add_in_slice(slice, x[i][0], radius[i]);
+  const int nscan = cached ? static_cast<int>(cands.size()) : nlocal;
+  auto local_index = [&](int k) { return cached ? cands[k] : k; };
+  extents(platens, width, active, sides, nscan, local_index);
+  int covered = 1;
+  if (cached) {
+    // the candidates give the bands of a full pass unless another disk might
+    // now be in one (on any rank): then the full pass after all
+    covered = candidates_.still_covers(slices[LEFT], slices[RIGHT]) ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &covered, 1, MPI_INT, MPI_MIN, world);
+    traffic_.detection_bytes += sizeof(int);
+    if (!covered) extents(platens, width, active, sides, nlocal, [](int k) { return k; });
   }
-  for (int k = LEFT; k <= RIGHT; k++) {
-    if (!active[k]) continue;
-    std::vector<double> &extent = sides[k].slices.extents();
-    MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
-                  k == RIGHT ? MPI_MAX : MPI_MIN, world);
-    traffic_.detection_bytes += sizeof(double) * extent.size();
-    sides[k].slices.finish();
+  if (!cached || !covered) {
+    traffic_.full_passes++;
+    remember_candidates(width, active, slices);
   }
 
+  double **x = atom->x;
+  double *radius = atom->radius;
   send_.clear();
-  for (int i = 0; i < nlocal; i++) {
+  const int nsend = cached && covered ? nscan : nlocal;
+  for (int k = 0; k < nsend; k++) {
+    const int i = cached && covered ? cands[k] : k;
     if (!(atom->mask[i] & groupbit_)) continue;
-    for (int k = LEFT; k <= RIGHT; k++) {
-      if (!active[k] ||
-          !sides[k].slices.contains_in_slice(slice_of_atom_[i], x[i][0], radius[i], width))
+    for (int s = LEFT; s <= RIGHT; s++) {
+      if (!active[s] ||
+          !sides[s].slices.contains_in_slice(slice_of_atom_[i], x[i][0], radius[i], width))
         continue;
-      const double rec[BAND_FIELDS] = {static_cast<double>(k),
+      const double rec[BAND_FIELDS] = {static_cast<double>(s),
                                        static_cast<double>(atom->tag[i]),
                                        x[i][0],
                                        x[i][1],
@@ -89,15 +102,80 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
       error->all(FLERR, (prefix_ + "no atoms in the " + membrane::side_name(k) + " band").c_str());
 }
 
+// The slices' extents over the n disks local_index(0..n-1), merged over the ranks.
+template <class Index>
+void MembraneGather::extents(const membrane::Platens &platens, double width, const bool active[2],
+                             MembraneSideData (&sides)[2], int n, Index local_index)
+{
+  for (int k = LEFT; k <= RIGHT; k++)
+    if (active[k]) sides[k].slices.reset(k == LEFT ? Side::Left : Side::Right, platens, width);
+  const membrane::BandSlices &slicing = sides[active[LEFT] ? LEFT : RIGHT].slices;
+  double **x = atom->x;
+  double *radius = atom->radius;
+  slice_of_atom_.resize(atom->nlocal);
+  for (int k = 0; k < n; k++) {
+    const int i = local_index(k);
+    if (!(atom->mask[i] & groupbit_)) continue;
+    const int slice = slicing.slice_of(x[i][1]);
+    slice_of_atom_[i] = slice;
+    for (int s = LEFT; s <= RIGHT; s++)
+      if (active[s]) sides[s].slices.add_in_slice(slice, x[i][0], radius[i]);
+  }
+  for (int k = LEFT; k <= RIGHT; k++) {
+    if (!active[k]) continue;
+    std::vector<double> &extent = sides[k].slices.extents();
+    MPI_Allreduce(MPI_IN_PLACE, extent.data(), static_cast<int>(extent.size()), MPI_DOUBLE,
+                  k == RIGHT ? MPI_MAX : MPI_MIN, world);
+    traffic_.detection_bytes += sizeof(double) * extent.size();
+    sides[k].slices.finish();
+  }
+}
+
+// LIGGGHTS rebuilds its neighbour lists (and only then moves atoms between
+// ranks or reorders them) before any atom has moved half a skin from where it
+// was at the last build, when it checks every step (neigh_modify every 1
+// delay 0 check yes): between two builds no disk moves more than a skin from
+// where it was when the candidates were taken. Without that guarantee every
+// detection is a full pass.
+bool MembraneGather::candidates_usable(double width, const bool active[2]) const
+{
+  return candidates_.valid() && candidates_.width() == width && candidates_neighbour_builds_ ==
+         neighbor->ncalls && candidates_nlocal_ == atom->nlocal &&
+         candidates_active_[LEFT] == active[LEFT] && candidates_active_[RIGHT] == active[RIGHT];
+}
+
+void MembraneGather::remember_candidates(double width, const bool active[2],
+                                         const membrane::BandSlices *const slices[2])
+{
+  candidates_.clear();
+  if (!(neighbor->every == 1 && neighbor->delay == 0 && neighbor->dist_check &&
+        !neighbor->build_once))
+    return;
+  std::vector<membrane::BandDisk> disks;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit_)
+      disks.push_back({i, atom->x[i][0], atom->x[i][1], atom->radius[i]});
+  // candidates reach one band width further in than the band
+  candidates_.build(disks, slices[LEFT], slices[RIGHT], width, width, neighbor->skin,
+                    domain->boxlo[1], domain->boxhi[1]);
+  candidates_neighbour_builds_ = neighbor->ncalls;
+  candidates_nlocal_ = atom->nlocal;
+  candidates_active_[LEFT] = active[LEFT];
+  candidates_active_[RIGHT] = active[RIGHT];
+}
+
 void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideData (&sides)[2],
                             const bool pending[2], const membrane::Platens &platens,
                             double tolerance, membrane::ChainResult (&results)[2])
 {
   auto owner = [&](int k) { return k == RIGHT && comm->nprocs > 1 ? 1 : 0; };
   const Side side_of[2] = {Side::Left, Side::Right};
-  for (int k = LEFT; k <= RIGHT; k++)
-    if (pending[k] && comm->me == owner(k))
-      finder.find(sides[k].band, side_of[k], platens, tolerance, results[k]);
+  {
+    const ScopedSeconds timing(traffic_.search_seconds);
+    for (int k = LEFT; k <= RIGHT; k++)
+      if (pending[k] && comm->me == owner(k))
+        finder.find(sides[k].band, side_of[k], platens, tolerance, results[k]);
+  }
   if (comm->nprocs == 1) return;
   // Every rank holds the same band in the same order (allgather): indices
   // into it identify the disks.
@@ -195,17 +273,21 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
 
 void MembraneGather::start_traffic(bigint step, long long detections)
 {
+  candidates_.clear(); // the group or the atoms may have changed between runs
   traffic_ = Traffic();
   traffic_.first_step = step;
   traffic_.first_detections = detections;
 }
 
-void MembraneGather::report_traffic(const char *id, bigint step, long long detections) const
+void MembraneGather::report_traffic(const char *id, bigint step, long long detections)
 {
+  double seconds[2] = {traffic_.fix_seconds, traffic_.search_seconds}, slowest[2] = {0.0, 0.0};
+  MPI_Reduce(seconds, slowest, 2, MPI_DOUBLE, MPI_MAX, 0, world);
   if (comm->me != 0) return;
   const std::string text =
       membrane::traffic_summary(id, traffic_.step_bytes, traffic_.detection_bytes,
-                                step - traffic_.first_step, detections - traffic_.first_detections);
+                                step - traffic_.first_step, detections - traffic_.first_detections,
+                                traffic_.full_passes, slowest[0], slowest[1]);
   if (screen) fprintf(screen, "%s%s\n", prefix_.c_str(), text.c_str());
   if (logfile) fprintf(logfile, "%s%s\n", prefix_.c_str(), text.c_str());
 }

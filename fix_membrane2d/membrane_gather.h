@@ -12,6 +12,7 @@
 #include "lmptype.h"
 #include "pointers.h"
 
+#include "membrane_band_cache.h"
 #include "membrane_chain.h"
 #include "membrane_state.h"
 
@@ -24,6 +25,19 @@ struct MembraneSideData {
   std::vector<int> chain_types;
 };
 
+// Adds the wall-clock time of its scope to `total`.
+class ScopedSeconds {
+ public:
+  explicit ScopedSeconds(double &total);
+  ~ScopedSeconds();
+  ScopedSeconds(const ScopedSeconds &) = delete;
+  ScopedSeconds &operator=(const ScopedSeconds &) = delete;
+
+ private:
+  double &total_;
+  double start_;
+};
+
 class MembraneGather : protected LAMMPS_NS::Pointers {
  public:
   MembraneGather(LAMMPS_NS::LAMMPS *lammps, std::string prefix, int groupbit)
@@ -31,7 +45,9 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   {
   }
 
-  // The disks of the group within `width` of the outer edge of each active side.
+  // The disks of the group within `width` of the outer edge of each active side:
+  // from the candidates of the last full pass over the rank's disks while they
+  // provably hold, else by a full pass (membrane_band_cache.h).
   void bands(const membrane::Platens &platens, double width, const bool active[2],
              MembraneSideData (&sides)[2]);
 
@@ -55,8 +71,13 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   // per-step gathers of watched disks, the gathers of a detection): counted
   // from the start of a run (`step`, the detections so far) and written to
   // the screen and log at its end (membrane::traffic_summary).
+  // With them, the wall-clock time the fix spends on each rank (fix_seconds:
+  // its pre_force and post_force, through a ScopedSeconds) and in the chain
+  // searches, which run on one rank per side while the others wait: the
+  // report gives the largest over the ranks (collective).
   void start_traffic(LAMMPS_NS::bigint step, long long detections);
-  void report_traffic(const char *id, LAMMPS_NS::bigint step, long long detections) const;
+  void report_traffic(const char *id, LAMMPS_NS::bigint step, long long detections);
+  double &fix_seconds() { return traffic_.fix_seconds; }
 
   // Order-free hash of the group's disks (tag, type, position, radius).
   std::uint64_t group_checksum();
@@ -72,10 +93,23 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   std::vector<int> counts_, displs_, slice_of_atom_, result_buf_;
   struct Traffic {
     double step_bytes = 0.0, detection_bytes = 0.0;
+    double fix_seconds = 0.0, search_seconds = 0.0;
+    long long full_passes = 0; // band detections that looked at every local disk
     LAMMPS_NS::bigint first_step = 0;
     long long first_detections = 0;
   } traffic_;
   double gathered_bytes() const; // of the last allgather_doubles, counts included
+
+  membrane::BandCandidates candidates_;
+  LAMMPS_NS::bigint candidates_neighbour_builds_ = -1;
+  int candidates_nlocal_ = -1;
+  bool candidates_active_[2] = {false, false};
+  template <class Index>
+  void extents(const membrane::Platens &platens, double width, const bool active[2],
+               MembraneSideData (&sides)[2], int n, Index local_index);
+  bool candidates_usable(double width, const bool active[2]) const;
+  void remember_candidates(double width, const bool active[2],
+                           const membrane::BandSlices *const slices[2]);
 };
 
 #endif

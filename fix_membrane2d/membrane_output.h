@@ -65,10 +65,13 @@ std::string restart_unreadable(const std::string &id, const std::string &reason,
 std::string restart_other_definition(const std::string &id);
 
 // What one rank received in the fix's collectives during a run of `steps`
-// steps with `detections` detections (the info line at the end of a run;
-// a run of 0 steps counts its setup as one).
+// steps with `detections` detections (`full_passes` of them looked at every
+// disk of the rank, the others at the band candidates only), and the seconds
+// the fix and its chain searches took on the slowest rank (the info line at the
+// end of a run; a run of 0 steps counts its setup as one).
 std::string traffic_summary(const std::string &id, double step_bytes, double detection_bytes,
-                            long long steps, long long detections);
+                            long long steps, long long detections, long long full_passes,
+                            double fix_seconds, double search_seconds);
 
 // One side's part of a polyline-file frame (doc/fix_membrane2d.md, "polyline").
 void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyline,

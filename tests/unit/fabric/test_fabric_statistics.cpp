@@ -518,6 +518,46 @@ TEST(AngleBin, AnyFiniteAngleIsInRange)
   }
 }
 
+// NormalBins must give angle_bin(atan2) bit for bit: random normals, normals
+// on and a few ulps beside every bin edge, the axes and signed zeros.
+TEST(NormalBins, SameBinAsAngleBinOfAtan2)
+{
+  std::mt19937_64 rng(20261202);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  for (int nbins : {2, 6, 8, 12, 18, 36, 72, 360}) {
+    const fabric::NormalBins bins(nbins);
+    std::vector<double> angles;
+    for (int k = 0; k < 20000; ++k) angles.push_back(angle(rng));
+    for (int k = -nbins; k <= nbins; ++k) {
+      double edge = k * (2.0 * kPi / nbins);
+      for (int step = 0; step < 4; ++step) {
+        angles.push_back(edge);
+        angles.push_back(-edge);
+        edge = std::nextafter(edge, 10.0);
+      }
+      for (double off : {1e-13, 1e-12, 2e-12, 1e-9})
+        for (double sign : {-1.0, 1.0}) angles.push_back(k * (2.0 * kPi / nbins) + sign * off);
+    }
+    for (double a : angles) {
+      const double nx = std::cos(a), ny = std::sin(a);
+      ASSERT_EQ(bins.bin(nx, ny), fabric::angle_bin(std::atan2(ny, nx), nbins))
+          << nbins << " bins, angle " << a;
+    }
+    for (double nx : {1.0, -1.0, 0.0, -0.0})
+      for (double ny : {1.0, -1.0, 0.0, -0.0})
+        if (nx != 0.0 || ny != 0.0) {
+          EXPECT_EQ(bins.bin(nx, ny), fabric::angle_bin(std::atan2(ny, nx), nbins))
+              << nbins << " bins, " << nx << " " << ny;
+        }
+  }
+}
+
+TEST(NormalBins, OnlyForAnEvenNumberOfBins)
+{
+  EXPECT_THROW(fabric::NormalBins(7), std::invalid_argument);
+  EXPECT_THROW(fabric::NormalBins(0), std::invalid_argument);
+}
+
 TEST(MakeContact, NormalAndForceComponents)
 {
   // l along +y, force on b (3, 4): fn = f.n = 4, ft = f.t with t = (-1, 0): -3
