@@ -263,7 +263,7 @@ MEMBRANE_COLLECTIVES = 3   # fix membrane2d per step: count allgather, data allg
 HALO_MESSAGES = 4          # exchanges with the 4 neighbouring sub-domains of a 2D grid
 
 
-def model(rows, prep_rows):
+def model(rows):
     """Parallel efficiency at P = 16, 64, 256 for the largest sample, from the measured
     work per particle-step (1 rank, largest scale run on 1 rank), the ghosts per unit
     length of a sub-domain edge and the membrane's per-step work and volumes (2 ranks,
@@ -372,7 +372,7 @@ def report(prefix):
                 ("ms per disk", lambda r: f(1e3 * r["s_per_disk"], "{:.1f}")),
                 ("us per disk-step (x ranks)", lambda r: f(r["us_per_disk_step"], "{:.3f}"))]),
             "", "## Beyond two cores: a model", ""]
-    lines, text = model(rows, prep)
+    lines, text = model(rows)
     out += lines + ["", text, "", "![scaling](scaling.png)", ""]
     return "\n".join(out)
 

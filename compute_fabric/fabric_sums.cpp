@@ -91,14 +91,14 @@ FabricSums::FabricSums(int n)
 {
   if (n < 3 || n == 4)
     throw std::invalid_argument("fabric: nbins must be >= 3 and != 4"); // as polar_histogram
-  if (n % 2 == 0) normal_bins.emplace_back(n);
+  if (n % 2 == 0) normal_bins.emplace(n);
 }
 
 void FabricSums::add(const Contact &c)
 {
-  if (normal_bins.empty() || !has_normal(c)) return add(c, std::atan2(c.ny, c.nx));
+  if (!normal_bins || !has_normal(c)) return add(c, std::atan2(c.ny, c.nx));
   contacts.add(1.0);
-  const int bin = normal_bins[0].bin(c.nx, c.ny);
+  const int bin = normal_bins->bin(c.nx, c.ny);
   add_to_bins(c, bin, (bin + nbins / 2) % nbins);
 }
 

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 #include "fabric_statistics.h"
@@ -63,7 +64,7 @@ struct FabricSums : PackedSums<FabricSums> {
 
  private:
   void add_to_bins(const Contact &c, int bin, int opposite);
-  std::vector<NormalBins> normal_bins; // one for an even nbins
+  std::optional<NormalBins> normal_bins; // with an even nbins
 };
 
 // The tensor estimator's force sums, a second pass over the contacts once the

@@ -42,22 +42,22 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
   // slices are the same.
   const membrane::BandSlices *slices[2] = {active[LEFT] ? &sides[LEFT].slices : nullptr,
                                            active[RIGHT] ? &sides[RIGHT].slices : nullptr};
-  const bool cached = candidates_usable(width, active);
   const std::vector<int> &cands = candidates_.candidates();
   const int nlocal = atom->nlocal;
-  const int nscan = cached ? static_cast<int>(cands.size()) : nlocal;
-  auto local_index = [&](int k) { return cached ? cands[k] : k; };
-  extents(platens, width, active, sides, nscan, local_index);
-  int covered = 1;
-  if (cached) {
+  bool from_candidates = candidates_usable(width, active);
+  auto candidate = [&](int k) { return cands[k]; };
+  auto every_disk = [](int k) { return k; };
+  if (from_candidates) {
+    extents(platens, width, active, sides, static_cast<int>(cands.size()), candidate);
     // the candidates give the bands of a full pass unless another disk might
     // now be in one (on any rank): then the full pass after all
-    covered = candidates_.still_covers(slices[LEFT], slices[RIGHT]) ? 1 : 0;
+    int covered = candidates_.still_covers(slices[LEFT], slices[RIGHT]) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &covered, 1, MPI_INT, MPI_MIN, world);
     traffic_.detection_bytes += sizeof(int);
-    if (!covered) extents(platens, width, active, sides, nlocal, [](int k) { return k; });
+    from_candidates = covered != 0;
   }
-  if (!cached || !covered) {
+  if (!from_candidates) {
+    extents(platens, width, active, sides, nlocal, every_disk);
     traffic_.full_passes++;
     remember_candidates(width, active, slices);
   }
@@ -65,9 +65,9 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
   double **x = atom->x;
   double *radius = atom->radius;
   send_.clear();
-  const int nsend = cached && covered ? nscan : nlocal;
+  const int nsend = from_candidates ? static_cast<int>(cands.size()) : nlocal;
   for (int k = 0; k < nsend; k++) {
-    const int i = cached && covered ? cands[k] : k;
+    const int i = from_candidates ? candidate(k) : k;
     if (!(atom->mask[i] & groupbit_)) continue;
     for (int s = LEFT; s <= RIGHT; s++) {
       if (!active[s] ||
