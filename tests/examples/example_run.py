@@ -13,7 +13,7 @@ def run(cmd, log):
     with open(log, "w") as f:
         p = subprocess.run(cmd, cwd=EXAMPLE, stdout=f, stderr=subprocess.STDOUT, timeout=900)
     if p.returncode != 0:
-        with open(log) as f:
+        with open(log, errors="replace") as f:  # see error_visible.py
             sys.exit("FAIL: %s exited %d\n%s" % (" ".join(cmd[:8]), p.returncode, f.read()[-3000:]))
     with open(log) as f:
         return f.read()
