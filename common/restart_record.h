@@ -31,17 +31,22 @@ class RestartRecordWriter {
 
 class RestartRecordReader {
  public:
-  // `n` bounds what may be read at `data` (pass a large n when unknown)
-  RestartRecordReader(const double *data, std::size_t n, double magic, int version) : data_(data)
+  // `n` bounds what may be read at `data` (pass a large n when unknown); formats
+  // `oldest` to `version` are read (the caller asks version() what is there)
+  RestartRecordReader(const double *data, std::size_t n, double magic, int version,
+                      int oldest = -1)
+    : data_(data)
   {
+    if (oldest < 0) oldest = version;
     if (n < HEADER || data[0] != magic) {
       error_ = "it was written by an earlier version of this style (before format " +
                std::to_string(version) + ")";
       return;
     }
     version_ = static_cast<int>(data[1]);
-    if (version_ != version) {
-      error_ = "it is in format " + std::to_string(version_) + "; this build reads format " +
+    if (version_ < oldest || version_ > version) {
+      error_ = "it is in format " + std::to_string(version_) + "; this build reads format" +
+               (oldest < version ? "s " + std::to_string(oldest) + " to " : " ") +
                std::to_string(version);
       return;
     }

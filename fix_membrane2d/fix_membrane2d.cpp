@@ -226,8 +226,10 @@ void FixMembrane2d::pre_force(int)
 {
   const ScopedSeconds timing(gather.fix_seconds());
   evaluate_platens();
-  const int every = definition.detect_every;
-  bool detect = run.force_detection || (!detect_auto() && update->ntimestep % every == 0);
+  const bigint step = update->ntimestep;
+  const bool unwatched = detect_auto() && unwatched_step(run, step);
+  bool detect =
+      run.force_detection || unwatched || (!detect_auto() && step % definition.detect_every == 0);
   if (!detect) {
     gather_watched();
     detect =
@@ -235,12 +237,13 @@ void FixMembrane2d::pre_force(int)
         detection_needed(chains, Platens{ylo, yhi}, Platens{run.ylo_detected, run.yhi_detected},
                          run.tolerance, watched.band_displacement, WATCH_BUDGET * d50);
   }
+  const bool watch = detect_auto() && !unwatched && !count_watched_step(run, step, detect);
   if (detect) {
     run.force_detection = false; // detect_chains() sets it again after widening the band
-    detect_chains();
+    detect_chains(watch);
     run.ylo_detected = ylo;
     run.yhi_detected = yhi;
-    build_watch_list(chains, detect_auto(), watch_list);
+    build_watch_list(chains, watch, watch_list);
     gather_watched(); // the new chain's positions and speeds
   }
   // after a run or a restart write the chain disks wear their own types
@@ -253,7 +256,7 @@ void FixMembrane2d::pre_force(int)
 // The width reached is kept for the rest of the run (a rough outline stays
 // rough), and both sides are searched again with it at the next step, so
 // every auto and every 1 search the same bands.
-void FixMembrane2d::detect_chains()
+void FixMembrane2d::detect_chains(bool watch_it)
 {
   run.counters.detections++;
   bool pending[2] = {chains[LEFT].active, chains[RIGHT].active};
@@ -279,8 +282,9 @@ void FixMembrane2d::detect_chains()
       SideChain &s = chains[k];
       const std::vector<long> old_tags = s.chain_tags.empty() ? s.forgotten_tags : s.chain_tags;
       // how often a detection changes anything: what skipping detections would risk
-      if (accept_chain(s, sides[k].band, results[k], detect_auto() ? &watch : nullptr))
+      if (accept_chain(s, sides[k].band, results[k], watch_it ? &watch : nullptr))
         run.counters.changes++;
+      if (detect_auto() && !watch_it) drop_watch(s);
       atoms.change_chain(old_tags, s.chain_tags, results[k].chain, sides[k]);
     }
   }

@@ -103,7 +103,7 @@ class FixMembrane2d : public Fix {
 
   void evaluate_platens();
   void forget_state();
-  void detect_chains();
+  void detect_chains(bool watch_it); // watch_it: every auto builds the watch of each side
   void chain_lost(int side, const std::string &why);
   void gather_watched();
   void check_stability();

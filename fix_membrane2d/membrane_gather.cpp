@@ -25,7 +25,7 @@ using membrane::Side;
 
 namespace {
 enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
-enum WatchField { W_TAG, W_X, W_Y, W_R, W_STEP, W_TYPE, WATCH_FIELDS };
+enum WatchField { W_ENTRY, W_X, W_Y, W_R, W_STEP, W_TYPE, WATCH_FIELDS };
 } // namespace
 
 ScopedSeconds::ScopedSeconds(double &total) : total_(total), start_(MPI_Wtime()) {}
@@ -193,33 +193,61 @@ void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideDat
   }
 }
 
+template <class TagOf>
+const std::vector<int> &MembraneGather::owned(OwnedIndices &cache, std::size_t n, TagOf tag_of)
+{
+  std::uint64_t hash = n;
+  for (std::size_t k = 0; k < n; k++)
+    hash = hash * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(tag_of(k));
+  if (cache.neighbour_builds == neighbor->ncalls && cache.nlocal == atom->nlocal &&
+      cache.tags_hash == hash && cache.index.size() == n)
+    return cache.index;
+  cache.index.resize(n);
+  for (std::size_t k = 0; k < n; k++) {
+    const int i = atom->map(static_cast<int>(tag_of(k)));
+    cache.index[k] = i >= 0 && i < atom->nlocal ? i : -1;
+  }
+  cache.neighbour_builds = neighbor->ncalls;
+  cache.nlocal = atom->nlocal;
+  cache.tags_hash = hash;
+  return cache.index;
+}
+
 MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::WatchEntry> &list,
                                                 membrane::SideChain (&chains)[2],
                                                 bool watch_relations, MembraneSideData (&sides)[2])
 {
+  double **x = atom->x;
   double local_displacement = 0.0;
   if (watch_relations)
-    for (const membrane::SideChain &s : chains) {
+    for (int k = LEFT; k <= RIGHT; k++) {
+      const membrane::SideChain &s = chains[k];
       if (!s.active || s.watch.always) continue;
-      for (const Disk &d : s.watch_band) {
-        const int i = atom->map(static_cast<int>(d.tag));
-        if (i < 0 || i >= atom->nlocal) continue;
-        const double dx = atom->x[i][0] - d.x, dy = atom->x[i][1] - d.y;
+      const std::vector<Disk> &band = s.watch_band;
+      const std::vector<int> &index =
+          owned(band_owned_[k], band.size(), [&](std::size_t b) { return band[b].tag; });
+      for (std::size_t b = 0; b < band.size(); b++) {
+        const int i = index[b];
+        if (i < 0) continue;
+        const double dx = x[i][0] - band[b].x, dy = x[i][1] - band[b].y;
         local_displacement = std::max(local_displacement, dx * dx + dy * dy);
       }
     }
   local_displacement = std::sqrt(local_displacement);
 
-  // each rank sends its owned watched disks and its own maximum in one allgather
+  // each rank sends its owned watched disks (by their place in the list, the
+  // same on every rank) and its own maximum in one allgather
+  const std::vector<int> &index =
+      owned(watched_owned_, list.size(), [&](std::size_t k) { return list[k].tag; });
   send_.clear();
-  for (const membrane::WatchEntry &e : list) {
-    const int i = atom->map(static_cast<int>(e.tag));
-    if (i < 0 || i >= atom->nlocal) continue;
+  for (std::size_t k = 0; k < list.size(); k++) {
+    const int i = index[k];
+    if (i < 0) continue;
     const double *v = atom->v[i];
     const double rec[WATCH_FIELDS] = {
-        static_cast<double>(e.tag),
-        atom->x[i][0],
-        atom->x[i][1],
+        static_cast<double>(k),
+        x[i][0],
+        x[i][1],
         atom->radius[i],
         stability::step_fraction(v[0], v[1], update->dt, atom->radius[i]),
         static_cast<double>(atom->type[i])};
@@ -249,13 +277,13 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
   Watched out;
   for (std::size_t k = 0; k < recv_.size(); k += WATCH_FIELDS) {
     const double *rec = recv_.data() + k;
-    if (rec[W_TAG] < 0.0) {
+    if (rec[W_ENTRY] < 0.0) {
       out.band_displacement = std::max(out.band_displacement, rec[W_X]);
       continue;
     }
-    const long tag = static_cast<long>(rec[W_TAG]);
+    const membrane::WatchEntry &e = list[static_cast<std::size_t>(rec[W_ENTRY])];
+    const long tag = e.tag;
     const Disk d{tag, rec[W_X], rec[W_Y], rec[W_R]};
-    const membrane::WatchEntry &e = *membrane::find_watched(list, tag);
     for (int side = LEFT; side <= RIGHT; side++) {
       if (e.chain_position[side] >= 0) {
         sides[side].chain_disks[e.chain_position[side]] = d;
@@ -273,7 +301,10 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
 
 void MembraneGather::start_traffic(bigint step, long long detections)
 {
-  candidates_.clear(); // the group or the atoms may have changed between runs
+  // the group or the atoms may have changed between runs, and LIGGGHTS counts
+  // the neighbour builds of each run from 0 (Verlet::setup)
+  candidates_.clear();
+  watched_owned_ = band_owned_[LEFT] = band_owned_[RIGHT] = OwnedIndices();
   traffic_ = Traffic();
   traffic_.first_step = step;
   traffic_.first_detections = detections;

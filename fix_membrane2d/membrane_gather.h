@@ -100,6 +100,19 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   } traffic_;
   double gathered_bytes() const; // of the last allgather_doubles, counts included
 
+  // Local indices of the watched disks (list entries, then each side's watch
+  // band): -1 where another rank owns the disk. Atoms change index or rank only
+  // when LIGGGHTS rebuilds its neighbour lists, so they are looked up again
+  // (atom->map) only then or when the list changed (and at the start of a run).
+  struct OwnedIndices {
+    std::vector<int> index;
+    LAMMPS_NS::bigint neighbour_builds = -1;
+    int nlocal = -1;
+    std::uint64_t tags_hash = 0;
+  };
+  OwnedIndices watched_owned_, band_owned_[2];
+  template <class TagOf> const std::vector<int> &owned(OwnedIndices &cache, std::size_t n, TagOf tag_of);
+
   membrane::BandCandidates candidates_;
   LAMMPS_NS::bigint candidates_neighbour_builds_ = -1;
   int candidates_nlocal_ = -1;

@@ -16,7 +16,8 @@
 namespace membrane {
 
 constexpr double RECORD_MAGIC = 7.0e9 + 2213.0; // not a count a version-1 record starts with
-constexpr int RECORD_VERSION = 2;
+constexpr int RECORD_VERSION = 3;        // 3: the every-auto detection window (RunState)
+constexpr int RECORD_OLDEST_VERSION = 2; // read too: no window yet
 
 inline RestartRecordWriter record_writer()
 {
@@ -24,7 +25,7 @@ inline RestartRecordWriter record_writer()
 }
 inline RestartRecordReader record_reader(const double *data, std::size_t n)
 {
-  return RestartRecordReader(data, n, RECORD_MAGIC, RECORD_VERSION);
+  return RestartRecordReader(data, n, RECORD_MAGIC, RECORD_VERSION, RECORD_OLDEST_VERSION);
 }
 
 // The whole record.

@@ -55,6 +55,33 @@ bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens det
   return false;
 }
 
+bool unwatched_step(const RunState &run, long long step)
+{
+  return step < run.unwatched_until;
+}
+
+bool count_watched_step(RunState &run, long long step, bool detected)
+{
+  run.window_steps++;
+  if (detected) run.window_detections++;
+  if (run.window_steps < DENSE_WINDOW) return false;
+  const bool dense = run.window_detections >= DENSE_DETECTIONS;
+  run.window_steps = run.window_detections = 0;
+  if (dense) run.unwatched_until = step + UNWATCHED_STEPS;
+  return dense;
+}
+
+void drop_watch(SideChain &s)
+{
+  s.watch.always = true;
+  s.watch.pairs.clear();
+  s.watch.platen_contacts.clear();
+  s.watch.ahead.clear();
+  s.watch.disks.clear();
+  s.watch_band.clear();
+  s.now.clear();
+}
+
 void set_lengths(const Definition &def, double d50, RunState &run)
 {
   run.band_width = def.band_given > 0.0 ? def.band_given : DEFAULT_BAND * d50;
@@ -105,13 +132,6 @@ void build_watch_list(const SideChain (&sides)[2], bool watch_relations,
     }
   }
   out.resize(n);
-}
-
-const WatchEntry *find_watched(const std::vector<WatchEntry> &list, long tag)
-{
-  const auto it = std::lower_bound(list.begin(), list.end(), tag,
-                                   [](const WatchEntry &w, long t) { return w.tag < t; });
-  return it != list.end() && it->tag == tag ? &*it : nullptr;
 }
 
 std::vector<std::pair<long, int>> type_changes(const std::vector<long> &old_tags,

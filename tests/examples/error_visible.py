@@ -16,7 +16,7 @@ import subprocess
 import sys
 import tempfile
 
-from example_run import Checks
+from example_run import Checks, mpi_env
 
 SCRIPT = """units si
 print "BEFORE the error: a line the log must keep"
@@ -39,15 +39,18 @@ def main():
             cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe, "-in", inp, "-log", log]
             if how == "file":
                 out_path = os.path.join(work, "screen.txt")
-                with open(out_path, "w") as f:
-                    p = subprocess.run(cmd, stdout=f, stderr=subprocess.DEVNULL, timeout=120)
+                with open(out_path, "w") as f, mpi_env() as env:
+                    p = subprocess.run(cmd, stdout=f, stderr=subprocess.DEVNULL, timeout=120,
+                                       env=env)
                 # errors="replace": with a 1-in-5 chance per error LIGGGHTS 3.8 appends a
                 # "Tip of the day" through a dangling std::string (error_special.h,
                 # generate_message), i.e. bytes of freed memory that need not be UTF-8
                 with open(out_path, errors="replace") as f:
                     out = f.read()
             else:
-                p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=120)
+                with mpi_env() as env:
+                    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                                       timeout=120, env=env)
                 out = p.stdout.decode(errors="replace")
             # a missing log fails the log check below (with what the run printed), not the test
             logtext = open(log, errors="replace").read() if os.path.exists(log) else ""

@@ -5,13 +5,16 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLE = os.path.join(ROOT, "examples", "biaxial")
+sys.path.insert(0, os.path.join(ROOT, "tests", "scripts"))
+from run_script import mpi_env  # noqa: E402  (an Open MPI session directory per run)
 
 
 def run(cmd, log):
     """Run `cmd` in examples/biaxial with its output in `log`; the test fails with the
     end of the log when it exits non-zero. Returns the output."""
-    with open(log, "w") as f:
-        p = subprocess.run(cmd, cwd=EXAMPLE, stdout=f, stderr=subprocess.STDOUT, timeout=900)
+    with open(log, "w") as f, mpi_env() as env:
+        p = subprocess.run(cmd, cwd=EXAMPLE, stdout=f, stderr=subprocess.STDOUT, timeout=900,
+                           env=env)
     if p.returncode != 0:
         with open(log, errors="replace") as f:  # see error_visible.py
             sys.exit("FAIL: %s exited %d\n%s" % (" ".join(cmd[:8]), p.returncode, f.read()[-3000:]))

@@ -68,6 +68,7 @@ tests/README.md lists the restart-checked scripts. Example:
     print           "RESULT x1 $(x[1])"
 """
 import argparse
+import contextlib
 import concurrent.futures
 import os
 import re
@@ -87,6 +88,16 @@ def directives(path):
     return out
 
 
+@contextlib.contextmanager
+def mpi_env():
+    """The environment for mpirun with an Open MPI session directory of its own:
+    concurrent mpiruns sharing one under /tmp race when one removes it while another
+    creates its own ("ORTE_ERROR_LOG: Error in file ../../../orte/util/session_dir.c
+    at line 107", seen under ctest -j2)."""
+    with tempfile.TemporaryDirectory(prefix="ompi-") as tmp:
+        yield dict(os.environ, OMPI_MCA_orte_tmpdir_base=tmp)
+
+
 def run(exe, np_, script, workdir, timeout, testdir=None):
     """Run one script; 'testdir' (the original script's folder) is passed as ${testdir}."""
     testdir = testdir or os.path.dirname(os.path.abspath(script))
@@ -94,8 +105,9 @@ def run(exe, np_, script, workdir, timeout, testdir=None):
     if np_ > 1:
         cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
     try:
-        p = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, errors="replace",
-                           timeout=timeout)
+        with mpi_env() as env:
+            p = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, errors="replace",
+                               timeout=timeout, env=env)
     except subprocess.TimeoutExpired:
         return 124, "TIMEOUT after %d s" % timeout
     return p.returncode, p.stdout + p.stderr

@@ -131,6 +131,9 @@ void sample_state(RunState &run, SideChain (&sides)[2])
   run.inertial.first_height = 0.2;
   run.inertial.was_above = true;
   run.warned_inertial = true;
+  run.window_steps = 7;
+  run.window_detections = 6;
+  run.unwatched_until = 12345;
   sides[LEFT].chain_tags = {3, 1, 4};
   sides[LEFT].escaped_tags = {15};
   sides[LEFT].escaped_radius = {0.001};
@@ -165,6 +168,9 @@ TEST(MembraneRecord, WholeStateRoundTrips)
   EXPECT_TRUE(back.inertial.was_above);
   EXPECT_TRUE(back.warned_inertial);
   EXPECT_FALSE(back.warned_chain_step);
+  EXPECT_EQ(back.window_steps, 7);
+  EXPECT_EQ(back.window_detections, 6);
+  EXPECT_EQ(back.unwatched_until, 12345);
   EXPECT_EQ(back_sides[LEFT].chain_tags, sides[LEFT].chain_tags);
   EXPECT_EQ(back_sides[LEFT].escaped_radius, sides[LEFT].escaped_radius);
   EXPECT_EQ(back_sides[RIGHT].watch_band.size(), 2u);
@@ -204,4 +210,32 @@ TEST(MembraneRecord, CutWholeRecordIsRefused)
   bool same = false;
   EXPECT_NE(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
   EXPECT_TRUE(same); // the definition was read: the error says the rest is corrupt
+}
+
+TEST(MembraneRecord, FormatTwoIsReadWithoutAWindow)
+{
+  // a format-2 record (before the every-auto window) is the format-3 one
+  // without its last three fields
+  Definition def;
+  RunState run;
+  SideChain sides[2];
+  sample_state(run, sides);
+  std::vector<double> rec = write_record(def, run, sides);
+  rec.resize(rec.size() - 3);
+  rec[1] = 2;
+  rec[2] = static_cast<double>(rec.size());
+  RunState back;
+  SideChain back_sides[2];
+  bool same = false;
+  EXPECT_EQ(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+  EXPECT_TRUE(same);
+  EXPECT_EQ(back.counters.detections, 12);
+  EXPECT_TRUE(back.warned_inertial);
+  EXPECT_EQ(back.window_steps, 0);
+  EXPECT_EQ(back.window_detections, 0);
+  EXPECT_EQ(back.unwatched_until, -1);
+  // format 1 is refused (EarlierFormatIsRefused), and so is format 2 cut short
+  rec.pop_back();
+  rec[2] = static_cast<double>(rec.size());
+  EXPECT_NE(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
 }

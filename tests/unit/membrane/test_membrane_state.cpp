@@ -100,13 +100,10 @@ TEST(MembraneState, WatchListHasOneEntryPerDiskWithAllItsRoles)
   EXPECT_EQ(list[3].band_index[RIGHT], 0);
   EXPECT_EQ(list[4].tag, 10);
   EXPECT_EQ(list[4].band_index[RIGHT], 1);
-  EXPECT_EQ(find_watched(list, 8), &list[3]);
-  EXPECT_EQ(find_watched(list, 7), nullptr);
-  EXPECT_EQ(find_watched(list, 11), nullptr);
   // every N: the watched relations are not gathered
   build_watch_list(sides, false, list);
-  EXPECT_EQ(list.size(), 4u);
-  EXPECT_EQ(find_watched(list, 10), nullptr);
+  ASSERT_EQ(list.size(), 4u);
+  EXPECT_EQ(list[3].tag, 8);
 }
 
 TEST(MembraneState, TypeChangesGiveLeavingDisksTheirOwnType)
@@ -211,4 +208,50 @@ TEST(MembraneState, SideLoadSumsToThePressureOnTheChord)
   // the sum is p t (-Dy, Dx) with D = (0, 2): (-20, 0)
   EXPECT_NEAR(load.total.x(), -20.0, 1e-12);
   EXPECT_NEAR(load.total.y(), 0.0, 1e-12);
+}
+
+TEST(MembraneState, ADenseWindowSwitchesTheWatchOffForAWhile)
+{
+  RunState run;
+  EXPECT_FALSE(unwatched_step(run, 0));
+  long long step = 100;
+  // one detection short of dense: the window closes and a new one opens
+  for (long long k = 0; k < DENSE_WINDOW; k++)
+    EXPECT_FALSE(count_watched_step(run, step++, k >= DENSE_WINDOW - DENSE_DETECTIONS + 1));
+  EXPECT_EQ(run.window_steps, 0);
+  EXPECT_EQ(run.window_detections, 0);
+  EXPECT_FALSE(unwatched_step(run, step));
+  // exactly DENSE_DETECTIONS of DENSE_WINDOW, spread over the window
+  const long long n = DENSE_DETECTIONS - 1, m = DENSE_WINDOW - 1;
+  for (long long k = 0; k < m; k++)
+    EXPECT_FALSE(count_watched_step(run, step++, (k + 1) * n / m != k * n / m));
+  EXPECT_EQ(run.window_detections + 1, DENSE_DETECTIONS);
+  const long long last = step;
+  EXPECT_TRUE(count_watched_step(run, step, true));
+  EXPECT_EQ(run.window_steps, 0);
+  EXPECT_EQ(run.unwatched_until, last + UNWATCHED_STEPS);
+  EXPECT_TRUE(unwatched_step(run, last + 1));
+  EXPECT_TRUE(unwatched_step(run, last + UNWATCHED_STEPS - 1));
+  EXPECT_FALSE(unwatched_step(run, last + UNWATCHED_STEPS)); // the watch is tried again
+}
+
+TEST(MembraneState, ADroppedWatchMakesTheNextWatchedStepDetect)
+{
+  SideChain chains[2];
+  chains[LEFT].active = true;
+  chains[LEFT].side = Side::Left;
+  chains[LEFT].watch.always = false; // nothing watched: nothing can flip
+  const Platens platens{0.0, 1.0};
+  EXPECT_FALSE(detection_needed(chains, platens, platens, 0.01, 0.0, 0.1));
+  chains[LEFT].watch.pairs.push_back({0, 1, true, true});
+  chains[LEFT].watch_band = {{1, 0.0, 0.5, 0.1}, {2, 0.2, 0.5, 0.1}};
+  chains[LEFT].now = chains[LEFT].watch_band;
+  drop_watch(chains[LEFT]);
+  EXPECT_TRUE(chains[LEFT].watch.always);
+  EXPECT_TRUE(chains[LEFT].watch.pairs.empty());
+  EXPECT_TRUE(chains[LEFT].watch_band.empty());
+  EXPECT_TRUE(detection_needed(chains, platens, platens, 0.01, 0.0, 0.1));
+  std::vector<WatchEntry> list;
+  build_watch_list(chains, true, list); // no relation disks left to gather
+  EXPECT_TRUE(list.empty());
 }
