@@ -1,4 +1,4 @@
-// Contact-fabric statistics of a 2D granular sample (spec: shared/spec/fabric.md).
+// Contact-fabric statistics of a 2D granular sample (definitions: doc/compute_fabric.md).
 //
 // Kept free of LIGGGHTS so every formula can be checked against exact cases. These
 // take the list of all contacts; the compute style fits from partial sums merged
@@ -137,7 +137,7 @@ ForceAnisotropy force_anisotropy_of(double f0, const Anisotropy &normal,
 
 // Bin means are independent of how many contacts a bin holds, so no fabric
 // correction is needed here. Empty bins are left out of the sums and f0 is the
-// mean over the angle the non-empty bins cover (spec section 2):
+// mean over the angle the non-empty bins cover (doc/compute_fabric.md, force anisotropy):
 //   f0 = sum' f(g) dth / (n' dth)
 //   an cos 2theta_n =  c/(pi f0) sum' fn(g) cos 2theta_g dth   (sin: likewise)
 //   at sin 2theta_t =  c/(pi f0) sum' ft(g) cos 2theta_g dth

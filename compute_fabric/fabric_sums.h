@@ -1,5 +1,5 @@
 // The partial sums from which every sample statistic of compute fabric is fitted
-// (spec: shared/spec/fabric.md). Each MPI rank adds its own contacts to one
+// (doc/compute_fabric.md). Each MPI rank adds its own contacts to one
 // FabricSums (add), the ranks' sums are merged (merge; compute fabric does it
 // with one MPI_Allreduce of pack()), and the fits below are done from the merged
 // sums, identically on every rank. No LIGGGHTS.

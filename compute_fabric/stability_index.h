@@ -1,5 +1,5 @@
 // Geometrical stability index (Momeni et al., Geotechnics 2 (2022) 297-316;
-// spec section 4). Separate from fabric_statistics.h because it is per particle
+// doc/compute_fabric.md). Separate from fabric_statistics.h because it is per particle
 // (dumpable per atom) rather than a sample statistic.
 #ifndef LIGGGHTS_MEMBRANE_STABILITY_INDEX_H
 #define LIGGGHTS_MEMBRANE_STABILITY_INDEX_H

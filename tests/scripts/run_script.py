@@ -92,7 +92,7 @@ def directives(path):
 def mpi_env():
     """The environment for mpirun with an Open MPI session directory of its own:
     concurrent mpiruns sharing one under /tmp race when one removes it while another
-    creates its own ("ORTE_ERROR_LOG: Error in file ../../../orte/util/session_dir.c
+    creates its own ("ORTE_ERROR_LOG: Error in file .../orte/util/session_dir.c
     at line 107", seen under ctest -j2)."""
     with tempfile.TemporaryDirectory(prefix="ompi-") as tmp:
         yield dict(os.environ, OMPI_MCA_orte_tmpdir_base=tmp)

@@ -1,4 +1,4 @@
-// Fabric statistics (spec sections 1-3, 5, 6) against exact cases: model-exact
+// Fabric statistics (doc/compute_fabric.md) against exact cases: model-exact
 // binned data, quadratures on which the trigonometric sums vanish exactly,
 // hand-worked lattices, and an independent eigen-solver route.
 #include "fabric_statistics.h"

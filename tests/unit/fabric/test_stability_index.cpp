@@ -1,4 +1,4 @@
-// Geometrical stability index (spec section 4): the spec's worked values plus
+// Geometrical stability index (doc/compute_fabric.md): its worked values plus
 // invariances that any correct implementation must have.
 #include "stability_index.h"
 
@@ -29,7 +29,7 @@ double gsi_deg(const std::vector<double> &degrees)
   return fabric::stability_index(radians(degrees));
 }
 
-// ---- spec worked values -----------------------------------------------------
+// ---- the worked values of doc/compute_fabric.md -------------------------------
 
 TEST(StabilityIndex, ThreeEvenlySpacedContactsAreFullyStable)
 {

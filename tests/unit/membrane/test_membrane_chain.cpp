@@ -63,7 +63,7 @@ int index_of(const std::vector<Disk> &d, long tag)
   return -1;
 }
 
-// The telescoping identity of the spec: sum of chain forces = p t (-Dy, Dx)
+// The telescoping identity (doc/fix_membrane2d.md, section 5): sum of chain forces = p t (-Dy, Dx)
 // (right) / p t (Dy, -Dx) (left), D = end - start of the polyline.
 void expect_force_balance(const Polyline &pl, Side side, double p, double t)
 {
