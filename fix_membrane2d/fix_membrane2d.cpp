@@ -37,7 +37,8 @@ namespace {
 const char *const PREFIX = "Fix membrane2d: "; // every message starts so (doc/messages.md)
 
 const char *const KEYWORDS[] = {"pressure",  "ylo",       "yhi",   "sides",        "band",
-                                "tolerance", "thickness", "every", "frictionless", "polyline"};
+                                "tolerance", "thickness", "every", "frictionless", "polyline",
+                                "vtk"};
 const char *const USE_PRESSURE =
     "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
 const char *const USE_YLO = "ylo Y: the bottom platen surface (length), a number or v_name";
@@ -45,7 +46,6 @@ const char *const USE_YHI = "yhi Y: the top platen surface (length), a number or
 const char *const USE_SIDES = "sides left|right|both";
 const char *const USE_EVERY =
     "every auto|N: detect when the chain can have changed (auto) or every N >= 1 steps";
-const char *const USE_POLYLINE = "polyline N FILE: write the chains every N >= 1 steps to FILE";
 const std::string USE_BAND =
     "band W: the width of the side bands (length), default " + number_text(DEFAULT_BAND) + " x D50";
 const std::string USE_TOLERANCE = "tolerance G: the largest gap (length) counted as a contact, "
@@ -57,7 +57,7 @@ const std::string USE_TOLERANCE = "tolerance G: the largest gap (length) counted
 /* ---------------------------------------------------------------------- */
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), polyline_every(0), polyline(lammps, PREFIX),
+  : Fix(lammps, narg, arg), frames(lammps, PREFIX),
     gather(lammps, PREFIX, groupbit), atoms(lammps), d50(0.0), density(0.0), pressure(0.0),
     ylo(0.0), yhi(0.0), flag_capacity(0)
 {
@@ -101,13 +101,8 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
           static_cast<int>(args.integer(1, atom->ntypes,
                                         "frictionless T: the atom type chain disks take (its "
                                         "coefficientFriction with every type is 0)"));
-    } else if (key == "polyline") {
-      polyline_every = args.integer(1, 1000000000L, USE_POLYLINE);
-      const std::string file = args.value(USE_POLYLINE);
-      if (file.empty()) args.bad("the file name is empty", USE_POLYLINE);
-      for (const char *k : KEYWORDS)
-        if (file == k) args.bad("the file name is the keyword '" + file + "'", USE_POLYLINE);
-      polyline.open(file);
+    } else if (key == "polyline" || key == "vtk") {
+      frames.read(key, args, KEYWORDS, sizeof(KEYWORDS) / sizeof(KEYWORDS[0]));
     } else {
       std::string keywords;
       for (const char *k : KEYWORDS) keywords += (keywords.empty() ? "" : ", ") + std::string(k);
@@ -325,8 +320,7 @@ void FixMembrane2d::post_force(int)
   check_stability();
   atoms.flags(chains, vector_atom, flag_capacity);
   output_vector(chains, loads, run, Platens{ylo, yhi}, pressure, watched.chain_step, vector_values);
-  if (polyline.is_open() && update->ntimestep % polyline_every == 0)
-    polyline.write(update->ntimestep, chains, sides, loads);
+  frames.write(update->ntimestep, chains, sides, loads);
 }
 
 // the chain disks' step (bench/stability_sweep.md) and the inertial number

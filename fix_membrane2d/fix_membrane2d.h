@@ -29,7 +29,7 @@ FixStyle(membrane2d,FixMembrane2d)
 #include "membrane_state.h"
 #include "membrane_atoms.h"
 #include "membrane_output.h"
-#include "membrane_polyline_file.h"
+#include "membrane_frames.h"
 #include "scalar_input.h"
 
 namespace LAMMPS_NS {
@@ -72,8 +72,7 @@ class FixMembrane2d : public Fix {
   ScalarInput pressure_in, ylo_in, yhi_in; // numbers or v_name
   membrane::Definition definition;         // as given (band/tolerance -1: default)
   bool detect_auto() const { return definition.detect_every == membrane::DETECT_AUTO; }
-  bigint polyline_every;
-  MembranePolylineFile polyline;
+  MembraneFrames frames; // keywords polyline and vtk
   MembraneGather gather;
   MembraneAtoms atoms; // forces, flags and types of the chain disks
   membrane::ChainFinder finder;

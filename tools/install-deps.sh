@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev                   # small dense linear algebra in the cores
   cmake g++ make libgtest-dev     # build and unit tests
   python3 python3-numpy python3-matplotlib   # post-processing and test driver
+  python3-vtk9                    # tests read the VTK files with a real VTK reader
 )
 
 missing=()

@@ -96,3 +96,43 @@ TEST(MembraneOutput, TrafficPerStepAndPerDetection)
             "pass over all disks); the fix took 0 s (slowest rank), 0 s of it in chain searches "
             "(one rank per side)");
 }
+
+// ---- the VTK frame and collection (membrane_vtk.h) --------------------------
+
+#include "membrane_vtk.h"
+
+TEST(MembraneVtk, AFrameHoldsThePolylineThenTheDisksOfEachSide)
+{
+  const membrane::Polyline line = {{0.0, 0.0}, {0.5, 1.0}, {0.0, 2.0}};
+  const std::vector<membrane::Disk> disks = {{7, 0.1, 0.5, 0.25}, {3, -0.1, 1.5, 0.5}};
+  const std::vector<Eigen::Vector2d> forces = {{-1.0, 0.5}, {-2.0, -0.5}};
+  const std::string vtp = membrane::vtk_frame({{2, &line, &disks, &forces}});
+  EXPECT_NE(vtp.find("NumberOfPoints=\"5\" NumberOfVerts=\"2\" NumberOfLines=\"1\""), std::string::npos);
+  // points 0-2 the polyline (one Line cell), 3-4 the disks (a Vertex cell each)
+  EXPECT_NE(vtp.find("<Lines>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n          0 1 2\n"),
+            std::string::npos);
+  EXPECT_NE(vtp.find("<Verts>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n          3 4\n"),
+            std::string::npos);
+  EXPECT_NE(vtp.find("Name=\"tag\" NumberOfComponents=\"1\" format=\"ascii\">\n          -1 -1 -1 7 3\n"),
+            std::string::npos);
+  EXPECT_NE(vtp.find("Name=\"force\" NumberOfComponents=\"3\" format=\"ascii\">\n          0 0 0 0 0 0 0 0 0 -1 0.5 0 -2 -0.5 0\n"),
+            std::string::npos);
+  EXPECT_NE(vtp.find("Name=\"side\" NumberOfComponents=\"1\" format=\"ascii\">\n          2 2 2 2 2\n"),
+            std::string::npos);
+}
+
+TEST(MembraneVtk, TheCollectionListsTheFramesInOrder)
+{
+  const std::string pvd = membrane::pvd_collection({{0, "m_0.vtp"}, {50, "m_50.vtp"}});
+  const std::size_t first = pvd.find("<DataSet timestep=\"0\" part=\"0\" file=\"m_0.vtp\"/>");
+  const std::size_t second = pvd.find("<DataSet timestep=\"50\" part=\"0\" file=\"m_50.vtp\"/>");
+  ASSERT_NE(first, std::string::npos);
+  ASSERT_NE(second, std::string::npos);
+  EXPECT_LT(first, second);
+  EXPECT_NE(membrane::pvd_collection({}).find("<Collection>\n  </Collection>"), std::string::npos);
+  // read back
+  const std::vector<std::pair<long long, std::string>> frames = {{0, "m_0.vtp"}, {1234567890123, "m_1234567890123.vtp"}};
+  EXPECT_EQ(membrane::pvd_frames(membrane::pvd_collection(frames)), frames);
+  EXPECT_TRUE(membrane::pvd_frames("").empty());
+  EXPECT_TRUE(membrane::pvd_frames("<DataSet timestep=\"3\" file=\"cut").empty());
+}
