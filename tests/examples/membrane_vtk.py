@@ -8,7 +8,11 @@ per frame one .vtp with, per side, a polyline of chain + 1 points (contact point
 and the two platen ends) as one Line cell and the chain disks as Vertex cells;
 the disks' forces summing to the fix's total force of the side and to
 p t (Dy, -Dx) on the left, p t (-Dy, Dx) on the right, D the polyline's chord;
-the .pvd lists every frame, in order, with its time step. The same run cut at
+the .pvd lists every frame, in order, with its time step. LIGGGHTS' own VTK
+dumps of the same run (doc/paraview.md) read back too: the particles with the
+membrane flag f_mem (as many 1s and 2s as chain disks) and compute fabric's
+per-disk contact counts (summing to 2 N_c), the contact network (N_c lines, as
+c_fab[10]). The same run cut at
 step 50 by write_restart and continued in a second process (read_restart) leaves
 the same .pvd and the same last frame, byte for byte.
 
@@ -33,6 +37,11 @@ variable testdir string %(dir)s
 """  # the hexagonal block's size
 SCRIPT = BLOCK + """include ${testdir}/membrane_block_setup.inc
 fix mem all membrane2d pressure %(p)g ylo ${ylo} yhi ${yhi} frictionless 2 vtk 50 post/membrane
+compute fab all fabric stability yes
+compute cpgl all pair/gran/local pos id force
+dump particles all custom/vtk 50 post/particles_*.vtp id type x y z radius f_mem c_fab[1] c_fab[2]
+dump contacts all local/gran/vtk 50 post/contacts_*.vtp cpgl
+variable nc equal c_fab[10]
 variable s equal step
 variable n4 equal f_mem[4]
 variable n5 equal f_mem[5]
@@ -40,7 +49,7 @@ variable f7 equal f_mem[7]
 variable f8 equal f_mem[8]
 variable f9 equal f_mem[9]
 variable f10 equal f_mem[10]
-fix out all print 50 "FRAME $s ${n4} ${n5} ${f7} ${f8} ${f9} ${f10}" screen yes
+fix out all print 50 "FRAME $s ${n4} ${n5} ${f7} ${f8} ${f9} ${f10} ${nc}" screen yes
 run 100
 """
 FIRST_HALF = BLOCK + """include ${testdir}/membrane_block_setup.inc
@@ -89,7 +98,7 @@ def main():
         frames = {}
         for line in p.stdout.splitlines():
             w = line.split()
-            if len(w) == 8 and w[0] == "FRAME":
+            if len(w) == 9 and w[0] == "FRAME":
                 frames[int(float(w[1]))] = [float(x) for x in w[2:]]
         check(sorted(frames) == [50, 100], "the fix printed frames 50 and 100: %s" % sorted(frames))
 
@@ -97,7 +106,20 @@ def main():
         listed = [(int(d.get("timestep")), d.get("file")) for d in pvd.iter("DataSet")]
         check(listed == [(0, "membrane_0.vtp"), (50, "membrane_50.vtp"), (100, "membrane_100.vtp")],
               "the .pvd lists the frames 0, 50, 100 in order: %s" % listed)
-        for step, (n_left, n_right, fxl, fyl, fxr, fyr) in sorted(frames.items()):
+        for step, (n_left, n_right, fxl, fyl, fxr, fyr, n_contacts) in sorted(frames.items()):
+            disks = read_frame(os.path.join(work, "post", "particles_%d.vtp" % step))
+            flag = vtk_to_numpy(disks.GetPointData().GetArray("f_mem"))
+            ends = vtk_to_numpy(disks.GetPointData().GetArray("c_fab[1]"))
+            lam = vtk_to_numpy(disks.GetPointData().GetArray("c_fab[2]"))
+            check(disks.GetNumberOfPoints() == 200 and (flag == 1).sum() == n_left and
+                  (flag == 2).sum() == n_right,
+                  "step %d: particles file: 200 disks, %d flagged 1 and %d flagged 2"
+                  % (step, (flag == 1).sum(), (flag == 2).sum()))
+            check(ends.sum() == 2 * n_contacts and ((lam >= 0) & (lam <= 1)).all(),
+                  "step %d: per-disk contacts sum to 2 x %d, lambda in [0, 1]" % (step, n_contacts))
+            network = read_frame(os.path.join(work, "post", "contacts_%d.vtp" % step))
+            check(network.GetNumberOfLines() == n_contacts,
+                  "step %d: contacts file: %d lines = c_fab[10]" % (step, network.GetNumberOfLines()))
             data = read_frame(os.path.join(work, "post", "membrane_%d.vtp" % step))
             side = vtk_to_numpy(data.GetPointData().GetArray("side"))
             tag = vtk_to_numpy(data.GetPointData().GetArray("tag"))
