@@ -86,17 +86,10 @@ void MembraneFrames::read(const std::string &key, StyleArgs &args, const char *c
     }
     if (!ok) std::snprintf(reason, sizeof(reason), "%s", std::strerror(errno));
   }
-  check_opened(key.c_str(), file, reason);
-}
-
-void MembraneFrames::check_opened(const char *key, const std::string &file, const char *reason)
-{
-  char shared[256];
-  std::snprintf(shared, sizeof(shared), "%s", reason);
-  MPI_Bcast(shared, sizeof(shared), MPI_CHAR, 0, world);
-  if (shared[0])
+  MPI_Bcast(reason, sizeof(reason), MPI_CHAR, 0, world);
+  if (reason[0])
     error->all(FLERR, keyword_message(prefix_, key, file,
-                                      std::string("cannot open the file for writing (") + shared +
+                                      std::string("cannot open the file for writing (") + reason +
                                           "); check that its folder exists and is writable")
                           .c_str());
 }

@@ -41,7 +41,6 @@ class MembraneFrames : protected LAMMPS_NS::Pointers {
   std::FILE *polyline_ = nullptr;
   std::string vtk_base_;                                 // FILE without .pvd
   std::vector<std::pair<long long, std::string>> vtk_frames_; // of this fix, in order
-  void check_opened(const char *key, const std::string &file, const char *reason);
 };
 
 #endif

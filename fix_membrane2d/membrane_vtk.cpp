@@ -1,5 +1,6 @@
 #include "membrane_vtk.h"
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 
@@ -7,7 +8,7 @@ namespace membrane {
 
 namespace {
 
-// One DataArray; `value(k)` gives the components of point k, `ncomp` each.
+// One DataArray; `value(k)` gives the components of point k (the first `ncomp`).
 template <class Value>
 void data_array(std::string &out, const char *type, const char *name, int ncomp, std::size_t n,
                 Value value)
@@ -15,11 +16,13 @@ void data_array(std::string &out, const char *type, const char *name, int ncomp,
   out += "        <DataArray type=\"" + std::string(type) + "\" Name=\"" + name +
          "\" NumberOfComponents=\"" + std::to_string(ncomp) + "\" format=\"ascii\">\n         ";
   char buf[32];
-  for (std::size_t k = 0; k < n; k++)
-    for (double v : value(k)) {
-      std::snprintf(buf, sizeof(buf), " %.17g", v); // every digit: ParaView gets the run's values
+  for (std::size_t k = 0; k < n; k++) {
+    const std::array<double, 3> v = value(k);
+    for (int c = 0; c < ncomp; c++) {
+      std::snprintf(buf, sizeof(buf), " %.17g", v[c]); // every digit: ParaView gets the run's values
       out += buf;
     }
+  }
   out += "\n        </DataArray>\n";
 }
 
@@ -57,17 +60,17 @@ std::string vtk_frame(const std::vector<VtkSide> &sides)
                     "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
                     "      <PointData>\n";
   data_array(out, "Int32", "side", 1, n, [&](std::size_t k) {
-    return std::vector<double>{static_cast<double>(points[k].side)};
+    return std::array<double, 3>{static_cast<double>(points[k].side)};
   });
   data_array(out, "Float64", "tag", 1, n,
-             [&](std::size_t k) { return std::vector<double>{points[k].tag}; });
+             [&](std::size_t k) { return std::array<double, 3>{points[k].tag}; });
   data_array(out, "Float64", "radius", 1, n,
-             [&](std::size_t k) { return std::vector<double>{points[k].r}; });
+             [&](std::size_t k) { return std::array<double, 3>{points[k].r}; });
   data_array(out, "Float64", "force", 3, n,
-             [&](std::size_t k) { return std::vector<double>{points[k].fx, points[k].fy, 0.0}; });
+             [&](std::size_t k) { return std::array<double, 3>{points[k].fx, points[k].fy, 0.0}; });
   out += "      </PointData>\n      <Points>\n";
   data_array(out, "Float64", "Points", 3, n,
-             [&](std::size_t k) { return std::vector<double>{points[k].x, points[k].y, 0.0}; });
+             [&](std::size_t k) { return std::array<double, 3>{points[k].x, points[k].y, 0.0}; });
   out += "      </Points>\n";
   // a cell block: connectivity (point indices) and offsets (end of each cell)
   auto cells = [&](const char *block, const std::vector<std::pair<std::size_t, std::size_t>> &c) {

@@ -143,6 +143,15 @@ void sample_state(RunState &run, SideChain (&sides)[2])
   sides[RIGHT].warned_lost = true;
 }
 
+// the record of sample_state as `def` writes it
+std::vector<double> sample_whole_record(const Definition &def)
+{
+  RunState run;
+  SideChain sides[2];
+  sample_state(run, sides);
+  return write_record(def, run, sides);
+}
+
 } // namespace
 
 TEST(MembraneRecord, WholeStateRoundTrips)
@@ -182,10 +191,7 @@ TEST(MembraneRecord, WholeStateRoundTrips)
 TEST(MembraneRecord, AnotherDefinitionLeavesTheStateAlone)
 {
   Definition def;
-  RunState run;
-  SideChain sides[2];
-  sample_state(run, sides);
-  const std::vector<double> rec = write_record(def, run, sides);
+  const std::vector<double> rec = sample_whole_record(def);
   Definition other = def;
   other.detect_every = 10;
   RunState back;
@@ -200,10 +206,7 @@ TEST(MembraneRecord, AnotherDefinitionLeavesTheStateAlone)
 TEST(MembraneRecord, CutWholeRecordIsRefused)
 {
   Definition def;
-  RunState run;
-  SideChain sides[2];
-  sample_state(run, sides);
-  std::vector<double> rec = write_record(def, run, sides);
+  std::vector<double> rec = sample_whole_record(def);
   rec[2] -= 1.0; // one field less than written
   RunState back;
   SideChain back_sides[2];
@@ -217,10 +220,7 @@ TEST(MembraneRecord, FormatTwoIsReadWithoutAWindow)
   // a format-2 record (before the every-auto window) is the format-3 one
   // without its last three fields
   Definition def;
-  RunState run;
-  SideChain sides[2];
-  sample_state(run, sides);
-  std::vector<double> rec = write_record(def, run, sides);
+  std::vector<double> rec = sample_whole_record(def);
   rec.resize(rec.size() - 3);
   rec[1] = 2;
   rec[2] = static_cast<double>(rec.size());
