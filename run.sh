@@ -20,6 +20,9 @@
 #   ./run.sh --rate R        axial strain rate [1/s] (default 0.0025: the fastest within the
 #                            sample scatter for the membrane, bench/accuracy_sweep.md)
 #   ./run.sh --strain E      final axial strain (default 0.10)
+#   ./run.sh --vtk E         ParaView files of each shear every E of axial strain (default 0.005;
+#                            0: none) in <case folder>/shear_<case>.txt.paraview/, opened in one
+#                            click from its run.pvd (doc/paraview.md)
 #   ./run.sh --seed S        seed of the (first) sample (default 12345)
 #   ./run.sh --samples N     N independent samples, seeds S, S + 1000, ..., S + 1000 (N - 1),
 #                            each sheared with both boundaries; the table gives means with
@@ -34,7 +37,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
 
-scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1; paper=0; restart_every=50000
+scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1; paper=0; restart_every=50000; vtk=0.005
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) scale=0.25; strain=0.02 ;;
@@ -46,6 +49,7 @@ while [ $# -gt 0 ]; do
     --rate) rate=$2; shift ;;
     --strain) strain=$2; shift ;;
     --seed) seed=$2; shift ;;
+    --vtk) vtk=$2; shift ;;
     --samples) samples=$2; shift ;;
     *) echo "unknown option $1 (see the comments at the top of run.sh)"; exit 2 ;;
   esac
@@ -54,6 +58,9 @@ done
 [[ "$samples" =~ ^[1-9][0-9]*$ ]] || { echo "--samples needs a positive integer, not '$samples'"; exit 2; }
 /usr/bin/python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) >= 0.1 else 1)" "$scale" 2>/dev/null \
   || { echo "--scale needs a number >= 0.1 (the meshes' ghost images in z, examples/biaxial/README.md), not '$scale'"; exit 2; }
+
+/usr/bin/python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) >= 0 else 1)" "$vtk" 2>/dev/null \
+  || { echo "--vtk needs an axial strain >= 0 between ParaView frames (0: none), not '$vtk'"; exit 2; }
 
 tools/install-deps.sh
 tools/build.sh >/dev/null
@@ -99,7 +106,7 @@ for k in $(seq 1 "$samples"); do
   fi
 
   for case in rigid membrane; do
-    shear_key="$prep_key rate $rate strain $strain ${shear_vars[*]} scripts $(script_hash in.shear_$case material.inc shear_setup.inc shear_measure.inc shear_loading.inc damping.inc)"
+    shear_key="$prep_key rate $rate strain $strain vtk $vtk ${shear_vars[*]} scripts $(script_hash in.shear_$case material.inc shear_setup.inc shear_measure.inc shear_loading.inc damping.inc paraview.inc)"
     if [ "$(cat "$dir/shear_$case.key" 2>/dev/null)" = "$shear_key" ] \
         && grep -qE "^SHEAR done" "$dir/screen.shear_$case" 2>/dev/null; then
       echo "== shear, $case, seed $s: done before, reused"
@@ -124,7 +131,7 @@ for k in $(seq 1 "$samples"); do
       fi
     fi
     "${mpi[@]}" "$exe" -in in.shear_$case "${run_vars[@]}" -var rate "$rate" -var eatarget "$strain" \
-        "${shear_vars[@]}" -log "$dir/log.shear_$case" > "$dir/screen.shear_$case" &
+        "${shear_vars[@]}" -var vtkstrain "$vtk" -log "$dir/log.shear_$case" > "$dir/screen.shear_$case" &
     pid=$!
     /usr/bin/python3 "$root/scripts/progress.py" "$writing" "$strain" "$pid" "$case" &
     mon=$!
@@ -136,6 +143,7 @@ for k in $(seq 1 "$samples"); do
       /usr/bin/python3 "$root/scripts/resume_shear.py" clean "$o"; rm -f "$dir/shear_$case.running"
     fi
     grep -E "^SHEAR done" "$dir/screen.shear_$case"
+    if [ -d "$o.paraview" ]; then /usr/bin/python3 "$root/scripts/paraview_collection.py" "$o.paraview"; fi
     echo "$shear_key" > "$dir/shear_$case.key"
   done
 done

@@ -9,6 +9,7 @@ packages=(
   cmake g++ make libgtest-dev     # build and unit tests
   python3 python3-numpy python3-matplotlib   # post-processing and test driver
   python3-vtk9                    # tests read the VTK files with a real VTK reader
+  xvfb xauth                      # a display for VTK's off-screen rendering (scripts/render_paraview.py)
 )
 
 missing=()

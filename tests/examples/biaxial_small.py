@@ -23,7 +23,10 @@ ranks. Checks physical sanity that a broken example would fail:
   every step give identical output tables;
 - the stability guards stay quiet: no warning from fix stability/guard (time
   step, overlaps, inertial number) or from fix membrane2d (time step, chain
-  speed, inertial number, lost chain) in any of the three runs.
+  speed, inertial number, lost chain) in any of the three runs;
+- the ParaView files of both shears (-var vtkstrain, a frame every 0.5 % strain)
+  read back with VTK's reader through their run.pvd agree with the run
+  (paraview_checks.py), and the picture of the last frame shows them.
 
     biaxial_small.py EXE NP
 """
@@ -34,6 +37,7 @@ import sys
 import tempfile
 
 from example_run import Checks, ROOT, run, table
+import paraview_checks
 
 
 def fields(line):
@@ -92,8 +96,12 @@ def main():
             table_path = os.path.join(work, "shear_%s.txt" % case)
             out = run(mpi + ["-in", "in.shear_%s" % case, "-var", "restart", restart,
                              "-var", "eatarget", "0.01", "-var", "out", table_path, "-var", "ndump", "100000",
-                             "-log", "none"], os.path.join(work, "%s.txt" % case))
+                             "-var", "vtkstrain", "0.005", "-log", "none"], os.path.join(work, "%s.txt" % case))
             runs[case] = t = table(table_path)
+            paraview_checks.check_run(check, case, table_path + ".paraview", t, 526,
+                                      ["wb", "wt", "wl", "wr"] if case == "rigid" else ["wb", "wt"])
+            paraview_checks.check_picture(check, case, table_path + ".paraview",
+                                          os.path.join(work, "%s.png" % case))
             check_quiet_guards(out, case)
             start = [l for l in out.splitlines() if l.startswith("START of shear")]
             check(len(start) == 1, "%s: holding phase done (%s)" % (case, start[0][:120] if start else "no START line"))
