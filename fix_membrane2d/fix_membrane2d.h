@@ -64,6 +64,7 @@ class FixMembrane2d : public Fix {
   // report: the frictionless type may not be on any atom before the first run.
   int min_type() { return definition.frictionless_type; }
   int max_type() { return definition.frictionless_type; }
+  const MembraneFrames &frame_files() const { return frames; }
 
   // the global vector: membrane::Output (membrane_output.h); per-atom flags:
   // MembraneAtoms::Flag (membrane_atoms.h)

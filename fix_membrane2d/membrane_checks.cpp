@@ -12,6 +12,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include "fix_membrane2d.h"
 #include "membrane_output.h"
 #include "style_args.h"
 
@@ -76,13 +77,21 @@ void check_other_membranes(LAMMPS *lmp, const char *prefix, Fix *self, MembraneG
     if (other == self || strcmp(other->style, self->style) != 0) continue;
     const bigint total = gather.shared_disks(other->groupbit);
     const bool first = f < modify->find_fix(self->id);
+    const std::string pair = std::string(prefix) + "fixes '" + (first ? other->id : self->id) +
+                             "' and '" + (first ? self->id : other->id) + "' ";
     if (total > 0)
-      lmp->error->all(FLERR, (std::string(prefix) + "fixes '" + (first ? other->id : self->id) +
-                              "' and '" + (first ? self->id : other->id) +
-                              "' are both membrane2d on " + std::to_string(total) +
+      lmp->error->all(FLERR, (pair + "are both membrane2d on " + std::to_string(total) +
                               " disks: one membrane per sample (unfix one; "
                               "two samples need groups with no disk in common)")
                                  .c_str());
+    // each would overwrite the other's frames (and the .pvd would list only one)
+    for (const char *key : {"polyline", "vtk"}) {
+      const std::string mine = static_cast<FixMembrane2d *>(self)->frame_files().file(key);
+      if (!mine.empty() && mine == static_cast<FixMembrane2d *>(other)->frame_files().file(key))
+        lmp->error->all(FLERR, (pair + "both write " + key + " frames to '" + mine +
+                                "': give each fix its own file")
+                                   .c_str());
+    }
   }
 }
 

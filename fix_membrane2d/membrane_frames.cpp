@@ -63,6 +63,7 @@ void MembraneFrames::read(const std::string &key, StyleArgs &args, const char *c
   if (file.empty()) args.bad("the file name is empty", use);
   for (int k = 0; k < nkeywords; k++)
     if (file == keywords[k]) args.bad("the file name is the keyword '" + file + "'", use);
+  if (!vtk) polyline_file_ = file;
   if (vtk) {
     if (file.size() > 4 && file.compare(file.size() - 4, 4, ".pvd") == 0) file.resize(file.size() - 4);
     vtk_base_ = file;
@@ -92,6 +93,12 @@ void MembraneFrames::read(const std::string &key, StyleArgs &args, const char *c
                                       std::string("cannot open the file for writing (") + reason +
                                           "); check that its folder exists and is writable")
                           .c_str());
+}
+
+std::string MembraneFrames::file(const std::string &key) const
+{
+  if (key == "polyline") return polyline_file_;
+  return vtk_base_.empty() ? "" : vtk_base_ + ".pvd";
 }
 
 void MembraneFrames::write(LAMMPS_NS::bigint step, const membrane::SideChain (&chains)[2],

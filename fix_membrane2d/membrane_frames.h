@@ -34,11 +34,14 @@ class MembraneFrames : protected LAMMPS_NS::Pointers {
   // The frames due at `step`.
   void write(LAMMPS_NS::bigint step, const membrane::SideChain (&chains)[2],
              const MembraneSideData (&sides)[2], const membrane::SideLoad (&loads)[2]);
+  // The file of keyword `key` (polyline: FILE, vtk: FILE.pvd); "" when not given.
+  std::string file(const std::string &key) const;
 
  private:
   std::string prefix_;
   LAMMPS_NS::bigint polyline_every_ = 0, vtk_every_ = 0;
   std::FILE *polyline_ = nullptr;
+  std::string polyline_file_;
   std::string vtk_base_;                                 // FILE without .pvd
   std::vector<std::pair<long long, std::string>> vtk_frames_; // of this fix, in order
 };

@@ -14,17 +14,11 @@ import sys
 
 import vtk
 
+from biaxial.vtk_files import read_polydata as read
 from paraview_collection import frames
 
 CIRCLE_SIDES = 24
 ARROW_LENGTH = 0.06   # the largest chain force drawn as this fraction of the sample height
-
-
-def read(path):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
 
 
 def actor(source_output, colour=None, width=None):

@@ -9,6 +9,7 @@ Modules:
     stats    -- Student-t quantile, 95 % intervals of a mean and of a paired difference
     replicates -- the table over replicate samples (mean ± interval, paired differences)
     summary  -- the rigid-vs-membrane table (Markdown and CSV)
+    vtk_files -- the run's VTK polydata files read back (python3-vtk9)
 
 Everything reported is computed from a run's files; what cannot be measured is
 returned as a NotMeasurable value carrying the reason.

@@ -24,10 +24,9 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
-
 from example_run import ROOT, Checks, mpi_env
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from biaxial.vtk_files import point_array, points, read_polydata  # noqa: E402
 
 PRESSURE, THICKNESS = 1e5, 1.0
 BLOCK = """variable a equal 0.002
@@ -68,13 +67,6 @@ run 50
 """
 
 
-def read_frame(path):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
 def run(exe, np_, work, script):
     """`script` (with %(dir)s and %(p)g) run in `work` on np_ ranks: its output."""
     os.makedirs(os.path.join(work, "post"), exist_ok=True)
@@ -107,24 +99,24 @@ def main():
         check(listed == [(0, "membrane_0.vtp"), (50, "membrane_50.vtp"), (100, "membrane_100.vtp")],
               "the .pvd lists the frames 0, 50, 100 in order: %s" % listed)
         for step, (n_left, n_right, fxl, fyl, fxr, fyr, n_contacts) in sorted(frames.items()):
-            disks = read_frame(os.path.join(work, "post", "particles_%d.vtp" % step))
-            flag = vtk_to_numpy(disks.GetPointData().GetArray("f_mem"))
-            ends = vtk_to_numpy(disks.GetPointData().GetArray("c_fab[1]"))
-            lam = vtk_to_numpy(disks.GetPointData().GetArray("c_fab[2]"))
+            disks = read_polydata(os.path.join(work, "post", "particles_%d.vtp" % step))
+            flag = point_array(disks, "f_mem")
+            ends = point_array(disks, "c_fab[1]")
+            lam = point_array(disks, "c_fab[2]")
             check(disks.GetNumberOfPoints() == 200 and (flag == 1).sum() == n_left and
                   (flag == 2).sum() == n_right,
                   "step %d: particles file: 200 disks, %d flagged 1 and %d flagged 2"
                   % (step, (flag == 1).sum(), (flag == 2).sum()))
             check(ends.sum() == 2 * n_contacts and ((lam >= 0) & (lam <= 1)).all(),
                   "step %d: per-disk contacts sum to 2 x %d, lambda in [0, 1]" % (step, n_contacts))
-            network = read_frame(os.path.join(work, "post", "contacts_%d.vtp" % step))
+            network = read_polydata(os.path.join(work, "post", "contacts_%d.vtp" % step))
             check(network.GetNumberOfLines() == n_contacts,
                   "step %d: contacts file: %d lines = c_fab[10]" % (step, network.GetNumberOfLines()))
-            data = read_frame(os.path.join(work, "post", "membrane_%d.vtp" % step))
-            side = vtk_to_numpy(data.GetPointData().GetArray("side"))
-            tag = vtk_to_numpy(data.GetPointData().GetArray("tag"))
-            force = vtk_to_numpy(data.GetPointData().GetArray("force"))
-            pts = vtk_to_numpy(data.GetPoints().GetData())
+            data = read_polydata(os.path.join(work, "post", "membrane_%d.vtp" % step))
+            side = point_array(data, "side")
+            tag = point_array(data, "tag")
+            force = point_array(data, "force")
+            pts = points(data)
             counts = {k: int(((side == k) & (tag >= 0)).sum()) for k in (1, 2)}
             check(counts == {1: n_left, 2: n_right} and n_left == 20,
                   "step %d: chain disks per side %s = f_mem[4], f_mem[5] (%d, %d)" % (step, counts, n_left, n_right))

@@ -7,6 +7,7 @@ H, the membrane frames against the particles' chain flag; and the picture of the
 frame (scripts/render_paraview.py, under xvfb-run) has the sample and its chain forces."""
 import os
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -14,23 +15,10 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 from example_run import EXAMPLE, ROOT
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from biaxial.vtk_files import point_array, points, read_polydata as read  # noqa: E402
 
 TRIANGLES = {"wb": "bottom", "wt": "top", "wl": "left", "wr": "right"}  # wall -> meshes/<name>.stl
-
-
-def read(path):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
-def points(poly):
-    return vtk_to_numpy(poly.GetPoints().GetData()).astype(float)
-
-
-def point_array(poly, name):
-    return vtk_to_numpy(poly.GetPointData().GetArray(name))
 
 
 def stl_triangles(wall):
