@@ -1,13 +1,19 @@
 #!/usr/bin/python3
-"""Report of the 2D DEM biaxial tests, rigid side walls vs fix membrane2d.
+"""Report of 2D DEM biaxial tests: the stress-strain analysis, fabric, roses and shear
+band of one or more runs, side by side (doc/report.md).
 
-    biaxial_report.py --rigid OUT_R --membrane OUT_M --outdir DIR [--d50 1.75e-3]
-    biaxial_report.py --samples SDIR [SDIR ...] --outdir DIR [--d50 1.75e-3]
+    liggghts-membrane-report OUT [OUT ...] [--names NAME ...] [--outdir DIR] [--d50 D]
+    liggghts-membrane-report --rigid OUT_R --membrane OUT_M [--outdir DIR] [--d50 D]
+    liggghts-membrane-report --samples SDIR [SDIR ...] [--outdir DIR] [--d50 D]
 
-OUT is the table the shear script writes; OUT.rose (polar histograms) and
-OUT.dump (positions) are read when present. Either run may be left out.
-Writes DIR/summary.md, DIR/summary.csv and the figures (stress_strain.png,
-fabric.png, roses.png, field_<run>.png), and prints the Markdown table.
+(liggghts-membrane-report is this script, scripts/biaxial_report.py, installed.)
+OUT is the table a shear script writes (doc/report.md: a '#' header line naming the
+columns, of which step ea s1 s3 ev el are needed); OUT.rose (polar histograms of
+compute fabric) and OUT.dump (positions) are read when present. The runs are named
+by --names, or by --rigid / --membrane, or else by their file names without the
+extension. Writes DIR (default: report) /summary.md, summary.csv and the figures
+(stress_strain.png, fabric.png, roses.png, field_<name>.png), and prints the Markdown
+table.
 
 With --samples (replicates): each SDIR holds one sample's shear_rigid.txt and
 shear_membrane.txt (with .rose, .dump) and gets the single-sample report above;
@@ -26,21 +32,42 @@ from biaxial.report import load_run  # noqa: E402
 
 
 def parse_args(argv):
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    p = argparse.ArgumentParser(prog="liggghts-membrane-report", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("runs", nargs="*", metavar="OUT", help="OUT table of a run")
+    p.add_argument("--names", nargs="+", metavar="NAME",
+                   help="the name of each OUT in the table and the figures (default: "
+                        "the file names without the extension)")
     p.add_argument("--rigid", help="OUT table of the rigid-wall run")
     p.add_argument("--membrane", help="OUT table of the membrane run")
     p.add_argument("--samples", nargs="+", metavar="SDIR",
                    help="one folder per replicate sample, each with shear_rigid.txt and "
                         "shear_membrane.txt (instead of --rigid/--membrane)")
-    p.add_argument("--outdir", required=True)
+    p.add_argument("--outdir", default="report", help="where the report goes (default: report)")
     p.add_argument("--d50", type=float, default=1.75e-3,
                    help="D50 [m] used only when a run has no dump (default 1.75e-3)")
     args = p.parse_args(argv)
-    if args.samples and (args.rigid or args.membrane):
-        p.error("give --samples or --rigid/--membrane, not both")
-    if not args.samples and not args.rigid and not args.membrane:
-        p.error("give --rigid and/or --membrane, or --samples")
+    ways = [w for w, given in (("OUT", args.runs), ("--rigid/--membrane", args.rigid or args.membrane),
+                               ("--samples", args.samples)) if given]
+    if len(ways) != 1:
+        p.error("give OUT tables, --rigid and/or --membrane, or --samples: " +
+                ("not both " + " and ".join(ways) if ways else "none was given"))
+    if args.names and len(args.names) != len(args.runs):
+        p.error(f"--names gives {len(args.names)} names for {len(args.runs)} OUT tables")
+    args.named = list(zip(args.names or [run_name(path) for path in args.runs], args.runs))
+    args.named += [(name, path) for name, path in (("rigid", args.rigid), ("membrane", args.membrane)) if path]
+    names = [name for name, _ in args.named]
+    if len(set(names)) != len(names):
+        p.error("two runs are named alike (%s): name them with --names" % " ".join(names))
+    for _, path in args.named:
+        if not os.path.isfile(path):
+            p.error(f"no OUT table {path}")
     return args
+
+
+def run_name(path):
+    """A run's default name: its file name without the extension."""
+    return os.path.splitext(os.path.basename(path))[0]
 
 
 def make_report(runs, outdir):
@@ -102,8 +129,8 @@ def main(argv=None):
             names.append(os.path.basename(os.path.normpath(folder)))
         print(make_replicate_report(samples, names, args.outdir))
         return 0
-    runs = [load_run(name, path, args.d50)
-            for name, path in (("rigid", args.rigid), ("membrane", args.membrane)) if path]
+    runs = [load_run(name, path, args.d50) for name, path in args.named]
+    plots.assign_colours(runs)
     print(make_report(runs, args.outdir))
     return 0
 

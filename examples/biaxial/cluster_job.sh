@@ -10,12 +10,19 @@
 # REPO WORK SCALE SEED CASE LAUNCH EVERY NDUMP EXTRA. From the repository root:
 #   sbatch examples/biaxial/cluster_job.sh           (Slurm)
 #   LAUNCH="mpirun -np 8" bash examples/biaxial/cluster_job.sh
+# With the package installed (doc/install.md), from any folder (WORK default: ./cluster):
+#   sbatch /usr/share/liggghts-membrane/examples/biaxial/cluster_job.sh
 set -euo pipefail
 REPO=${REPO:-${SLURM_SUBMIT_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}}   # built with tools/build.sh
-WORK=${WORK:-$REPO/out/cluster}; mkdir -p "$WORK"
+if [ -x "$REPO/build/app/liggghts-membrane" ]; then
+  LM=$REPO/build/app/liggghts-membrane; WORK=${WORK:-$REPO/out/cluster}
+else                                        # the installed package
+  LM=$(command -v liggghts-membrane) || { echo "cluster_job.sh: no $REPO/build/app/liggghts-membrane and no liggghts-membrane on PATH"; exit 1; }
+  REPO=$(dirname "$(readlink -f "$LM")")/../share/liggghts-membrane; WORK=${WORK:-$PWD/cluster}
+fi
+mkdir -p "$WORK"; WORK=$(cd "$WORK" && pwd)
 SCALE=${SCALE:-4}; SEED=${SEED:-1}; CASE=${CASE:-membrane}
 LAUNCH=${LAUNCH:-srun}                      # or: mpirun -np $SLURM_NTASKS
-LM=$REPO/build/app/liggghts-membrane
 cd "$REPO/examples/biaxial"                 # the scripts find their includes and meshes here
 S=$WORK/s${SCALE}_${SEED}; OUT=$S.$CASE.txt
 [ -f $S.data ] || /usr/bin/python3 ../../scripts/generate_sample.py --scale $SCALE --seed $SEED --out $S.data

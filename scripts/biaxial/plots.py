@@ -16,10 +16,18 @@ from . import rose, stats  # noqa: E402
 from .curves import measured  # noqa: E402
 
 COLOURS = {"rigid": "C0", "membrane": "C3"}
+OTHER_COLOURS = ("C2", "C1", "C4", "C5", "C6", "C8", "C9", "C7")
+
+
+def assign_colours(runs):
+    """Rigid and membrane keep their colours; other runs take the others in turn."""
+    others = iter(OTHER_COLOURS * len(runs))
+    for run in runs:
+        run.colour = COLOURS.get(run.name) or next(others)
 
 
 def _colour(run):
-    return COLOURS.get(run.name, "C2")
+    return run.colour or COLOURS.get(run.name, "C2")
 
 
 def _note(ax, text):

@@ -13,6 +13,7 @@ class Run:
     def __init__(self, name, prefix):
         self.name = name
         self.prefix = prefix
+        self.colour = None        # of its curves (plots.assign_colours); None: by its name
         self.table = None
         self.curves = {}
         self.roses = []

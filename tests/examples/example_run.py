@@ -9,11 +9,11 @@ sys.path.insert(0, os.path.join(ROOT, "tests", "scripts"))
 from run_script import mpi_env  # noqa: E402  (an Open MPI session directory per run)
 
 
-def run(cmd, log):
-    """Run `cmd` in examples/biaxial with its output in `log`; the test fails with the
-    end of the log when it exits non-zero. Returns the output."""
+def run(cmd, log, cwd=EXAMPLE):
+    """Run `cmd` in `cwd` (examples/biaxial) with its output in `log`; the test fails with
+    the end of the log when it exits non-zero. Returns the output."""
     with open(log, "w") as f, mpi_env() as env:
-        p = subprocess.run(cmd, cwd=EXAMPLE, stdout=f, stderr=subprocess.STDOUT, timeout=900,
+        p = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=900,
                            env=env)
     if p.returncode != 0:
         with open(log, errors="replace") as f:  # see error_visible.py

@@ -87,5 +87,48 @@ class Report(unittest.TestCase):
             self.assertEqual(next(csv.reader(f)), ["quantity", "membrane"])
 
 
+    def report(self, *args):
+        script = os.path.join(synthetic.SCRIPTS, "biaxial_report.py")
+        return subprocess.run([sys.executable, script] + list(args), capture_output=True, text=True)
+
+    def test_any_runs_named_by_their_files(self):
+        out = os.path.join(self.tmp.name, "by_file")
+        proc = self.report(self.membrane, self.rigid, "--outdir", out)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        with open(os.path.join(out, "summary.csv")) as f:
+            rows = {r[0]: r[1:] for r in csv.reader(f)}
+        self.assertEqual(rows["quantity"], ["shear_membrane", "shear_rigid"])
+        # the same analysis as under --rigid/--membrane, column for column
+        self.assertEqual(rows["peak s1/s3"][1], self.cell("peak s1/s3", "rigid"))
+        self.assertEqual(rows["E, initial [MPa]"][0], self.cell("E, initial [MPa]", "membrane"))
+        self.assertTrue(os.path.exists(os.path.join(out, "field_shear_rigid.png")))
+
+    def test_names_given(self):
+        out = os.path.join(self.tmp.name, "named")
+        proc = self.report(self.rigid, "--names", "dense", "--outdir", out)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("| quantity | dense |", proc.stdout)
+
+    def test_bad_command_lines(self):
+        other = os.path.join(self.tmp.name, "other")
+        os.makedirs(other, exist_ok=True)
+        twin = os.path.join(other, "shear_rigid.txt")
+        synthetic.write_band_run(twin, synthetic.elastoplastic_curve())
+        for args, said in (([], "none was given"),
+                           ([self.rigid, "--rigid", self.rigid], "not both OUT and --rigid/--membrane"),
+                           ([self.rigid, "--names", "a", "b"], "--names gives 2 names for 1 OUT tables"),
+                           ([self.rigid, twin], "two runs are named alike (shear_rigid shear_rigid)"),
+                           ([os.path.join(other, "nosuch.txt")], "no OUT table")):
+            proc = self.report(*args)
+            self.assertEqual(proc.returncode, 2, args)
+            self.assertIn(said, proc.stderr, args)
+
+    def test_help(self):
+        proc = self.report("--help")
+        self.assertEqual(proc.returncode, 0)
+        self.assertIn("usage: liggghts-membrane-report", proc.stdout)
+        self.assertIn("doc/report.md", proc.stdout)
+
+
 if __name__ == "__main__":
     unittest.main()
