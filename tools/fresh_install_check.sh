@@ -12,13 +12,14 @@ MIRROR=${2:-http://deb.debian.org/debian}
 command -v debootstrap >/dev/null || apt-get install -y debootstrap
 ROOT=$(mktemp -d)
 cleanup() {
-  for m in dev/pts dev proc; do umount "$ROOT/$m" 2>/dev/null || true; done
+  for m in dev/pts dev sys proc; do umount "$ROOT/$m" 2>/dev/null || true; done
   rm -rf "$ROOT"
 }
 trap cleanup EXIT
 
 debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR"
 mount --bind /proc "$ROOT/proc"
+mount --bind /sys "$ROOT/sys"      # hwloc (Open MPI) reads the CPU topology there
 mount --bind /dev "$ROOT/dev"
 mount --bind /dev/pts "$ROOT/dev/pts"
 cp "$DEB" "$ROOT/tmp/"

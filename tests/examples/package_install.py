@@ -5,7 +5,8 @@ from its installed paths:
 
 - its Depends name what the executable links (libliggghts3, the Open MPI library)
   and what the scripts run (liggghts, openmpi-bin, python3-numpy, python3-matplotlib),
-  and apt resolves them on this machine with nothing else to install;
+  and apt resolves them on this machine with nothing else to install (--reinstall:
+  the same answer when the package is installed here already);
 - the installed executable finds every library it links;
 - liggghts-membrane-sample writes a sample; in.prepare and in.shear_membrane run with
   the installed executable in the installed examples folder, finding their includes
@@ -50,7 +51,7 @@ def main():
         wanted = {"liggghts", "libliggghts3", "libopenmpi3", "openmpi-bin", "python3", "python3-numpy",
                   "python3-matplotlib"}
         check(wanted <= names, "Depends: %s (lacks %s)" % (depends.strip(), " ".join(sorted(wanted - names)) or "none"))
-        p = subprocess.run(["apt-get", "install", "--simulate", "--no-install-recommends", deb],
+        p = subprocess.run(["apt-get", "install", "--simulate", "--reinstall", "--no-install-recommends", deb],
                            capture_output=True, text=True)
         inst = [l.split()[1] for l in p.stdout.splitlines() if l.startswith("Inst ")]
         check(p.returncode == 0 and inst == ["liggghts-membrane"],
