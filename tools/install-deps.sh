@@ -6,6 +6,7 @@ packages=(
   liggghts libliggghts-dev        # LIGGGHTS 3.8: the DEM engine we extend
   libopenmpi-dev openmpi-bin      # MPI (LIGGGHTS is built against Open MPI)
   libeigen3-dev                   # small dense linear algebra in the cores
+  libcgal-dev                     # regular triangulation of the 3D membrane's packing
   cmake g++ make libgtest-dev     # build and unit tests
   python3 python3-numpy python3-matplotlib   # post-processing and test driver
   python3-vtk9                    # tests read the VTK files with a real VTK reader

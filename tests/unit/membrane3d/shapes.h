@@ -14,7 +14,6 @@ namespace shapes {
 using membrane3d::Surface;
 using Eigen::Vector3d;
 
-
 // O, e1, e2, e3; faces counter-clockwise from outside: -z, -y, -x and the slanted one.
 inline Surface corner_tetrahedron() {
   return {{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0), Vector3d(0, 0, 1)},

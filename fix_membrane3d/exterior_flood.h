@@ -1,0 +1,54 @@
+// The outer boundary of a packing of spheres (fix membrane3d): which facets of the
+// packing the membrane lies on, and which spheres are inside, on it or outside. No
+// LIGGGHTS here: unit-tested in tests/unit/membrane3d.
+//
+// Construction. The spheres' centres are triangulated by the regular (power)
+// triangulation with weights r^2, so that small spheres between large ones keep their
+// own facets (CGAL's Regular_triangulation_3, exact predicates: the combinatorics is
+// exact for the given doubles and does not depend on the input order). Two spheres are
+// linked when their gap |x_i - x_j| - r_i - r_j is at most the tolerance T; a facet
+// whose three edges are links is a wall. The exterior is flooded from the unbounded
+// cells through every facet that is not a wall. The membrane is the walls between a
+// flooded cell and one that is not, oriented towards the flood.
+//
+// Why this is robust: whatever the geometry, the boundary of a set of cells is a closed
+// surface, so the membrane can leak (if T leaves a window of the skin open) but never
+// be torn, pinched into nonsense or crash; a sphere is on the membrane exactly when its
+// cells are both flooded and not, so no sphere whose cells are all unflooded (an
+// interior sphere, or one in a closed internal void) ever gets pressure.
+//
+// Sealed spheres (the platen images of lateral_surface.h) are never a way in: a cell all
+// of whose spheres are sealed is not flooded, so the flood reaches the packing only from
+// the sides. Of the unflooded cells only the largest connected group (by cells with an
+// unsealed sphere) is the sample: the spheres of any other group (a linked cluster that
+// has left the sample) are outside.
+#ifndef LIGGGHTS_MEMBRANE_EXTERIOR_FLOOD_H
+#define LIGGGHTS_MEMBRANE_EXTERIOR_FLOOD_H
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace membrane3d {
+
+struct Sphere {
+  Eigen::Vector3d x;
+  double r;
+};
+
+enum class Side : char { inside, surface, outside };
+
+struct Boundary {
+  std::vector<std::array<int, 3>> facets;  // sphere indices, counter-clockwise from outside
+  std::vector<Side> side;                  // per sphere
+};
+
+// Throws std::invalid_argument for fewer than four spheres, a radius that is not
+// positive or a tolerance that is negative or not finite, naming the value.
+Boundary exterior_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
+                           double tolerance);
+
+} // namespace membrane3d
+
+#endif

@@ -1,0 +1,66 @@
+// The membrane of a triaxial sample (fix membrane3d): the lateral surface of the packing
+// between two platens normal to z, its loads on the spheres and which spheres have
+// escaped. No LIGGGHTS here: unit-tested in tests/unit/membrane3d.
+//
+// The platens. Each sphere within the image band of a platen (3 (2 r_max + T) from
+// it) is mirrored in the platen plane, so that near a platen the packing continues
+// beyond it as it is before it; the images are sealed (exterior_flood.h), so the
+// flood reaches the packing from the sides only. The boundary of the flood is then
+// clipped at the two platen planes: the membrane ends exactly on the platens, its rims
+// lie in their planes, and lateral_volume (surface_loads.h) is the sample's volume
+// between them. A sphere is linked to a platen, in effect, when its gap to it is at
+// most T / 2 (its gap to its own image at most T).
+//
+// Vertex convention: the membrane runs through the sphere centres (a clipped facet
+// has corners on its edges, in the platen planes). The volume is therefore that of
+// the polyhedron of the surface spheres' centres, less than the volume inside the
+// spheres' outer faces by about half a surface sphere's thickness times the area.
+//
+// Loads: the pressure on the part of a facet between the platens is shared among the
+// facet's spheres as the consistent loads of a uniform pressure on a linear triangle,
+// sum of -p x area x (mean shape function at the part's corners): equal thirds for an
+// unclipped facet; a load at an image goes to its sphere unchanged. The loads sum to
+// -p times the vector area of the lateral surface, whose x and y components are zero to
+// round-off because its rims lie in planes normal to z.
+#ifndef LIGGGHTS_MEMBRANE_LATERAL_SURFACE_H
+#define LIGGGHTS_MEMBRANE_LATERAL_SURFACE_H
+
+#include "exterior_flood.h"
+#include "surface_loads.h"
+
+#include <array>
+#include <vector>
+
+namespace membrane3d {
+
+struct Platens {
+  double lo, hi;  // z of the lower and upper platen
+};
+
+// A corner of the lateral surface as weights over up to three spheres (-1: unused).
+struct Corner {
+  std::array<int, 3> sphere;
+  std::array<double, 3> weight;
+};
+
+struct LateralSurface {
+  Surface surface;              // the corners as points, facets counter-clockwise from outside
+  std::vector<Corner> corners;  // one per surface point
+  std::vector<Side> side;       // per sphere: surface when it carries a load
+  bool reaches_lo = false, reaches_hi = false;  // a rim on each platen
+};
+
+// Throws std::invalid_argument for platens not in order or a centre not strictly
+// between them (naming the sphere), and what exterior_boundary throws;
+// std::runtime_error when no surface separates the spheres from the outside (no
+// packing: no closed shell of links).
+LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
+                               double tolerance);
+
+// The membrane's load on each sphere (zero off the surface) at pressure p.
+std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
+                                            std::size_t n_spheres, double p);
+
+} // namespace membrane3d
+
+#endif

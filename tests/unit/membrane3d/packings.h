@@ -1,0 +1,54 @@
+// Hand-made packings of equal spheres (radius 1/2, touching at spacing 1) for the
+// membrane3d surface tests: a simple-cubic block, a face-centred cubic block, and
+// the platens that touch their bottom and top layers.
+#ifndef LIGGGHTS_MEMBRANE_TEST_PACKINGS_H
+#define LIGGGHTS_MEMBRANE_TEST_PACKINGS_H
+
+#include "lateral_surface.h"
+
+#include <cmath>
+#include <vector>
+
+namespace packings {
+
+using membrane3d::Platens;
+using membrane3d::Sphere;
+using Eigen::Vector3d;
+
+constexpr double radius = 0.5;
+
+// Centres (i, j, k) for i < nx, j < ny, k < nz.
+inline std::vector<Sphere> simple_cubic(int nx, int ny, int nz) {
+  std::vector<Sphere> s;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) s.push_back({Vector3d(i, j, k), radius});
+  return s;
+}
+
+// Face-centred cubic, cube edge a = sqrt 2 (nearest neighbours at 1): centres
+// (i, j, k) a / 2 with i + j + k even, 0 <= i, j <= 2 m, 0 <= k <= 2 l. The faces
+// x, y = 0 and m a are (100) planes, square lattices of touching spheres.
+inline std::vector<Sphere> face_centred_cubic(int m, int l) {
+  const double h = std::sqrt(2.0) / 2;
+  std::vector<Sphere> s;
+  for (int k = 0; k <= 2 * l; ++k)
+    for (int j = 0; j <= 2 * m; ++j)
+      for (int i = 0; i <= 2 * m; ++i)
+        if ((i + j + k) % 2 == 0) s.push_back({Vector3d(i * h, j * h, k * h), radius});
+  return s;
+}
+
+// Platens touching the lowest and highest spheres.
+inline Platens touching_platens(const std::vector<Sphere> &s) {
+  double lo = s.front().x.z(), hi = lo;
+  for (const Sphere &p : s) {
+    lo = std::min(lo, p.x.z());
+    hi = std::max(hi, p.x.z());
+  }
+  return {lo - radius, hi + radius};
+}
+
+} // namespace packings
+
+#endif

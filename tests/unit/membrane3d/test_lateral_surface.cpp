@@ -1,0 +1,252 @@
+// The lateral membrane of hand-made packings (fix_membrane3d/lateral_surface.h):
+// which spheres are on it, inside and outside, its loads and the volume, against
+// values worked by hand.
+#include "lateral_surface.h"
+#include "packings.h"
+#include "shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+using namespace packings;
+using membrane3d::LateralSurface;
+using membrane3d::Side;
+using shapes::expect_vector_near;
+
+namespace {
+
+constexpr double p = 2.0;          // pressure
+constexpr double round_off = 1e-12;
+
+int count(const LateralSurface &m, Side side) {
+  int n = 0;
+  for (Side s : m.side) n += s == side;
+  return n;
+}
+
+// The sum of the loads on the spheres that `pick` selects.
+Vector3d load_on(const std::vector<Sphere> &s, const LateralSurface &m,
+                 const std::function<bool(const Vector3d &)> &pick) {
+  const auto load = membrane3d::membrane_loads(m, s.size(), p);
+  Vector3d sum = Vector3d::Zero();
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (pick(s[i].x)) sum += load[i];
+  return sum;
+}
+
+} // namespace
+
+// 4 x 3 x 5 simple-cubic block, T = r: face diagonals (gap sqrt 2 - 1) are links,
+// body diagonals (sqrt 3 - 1) are not. The membrane runs through the centres of the
+// four lateral faces, from the lower platen (z = -1/2) to the upper (9/2).
+TEST(LateralSurface, SimpleCubicBlock) {
+  const auto s = simple_cubic(4, 3, 5);
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+  EXPECT_EQ(count(m, Side::surface), 60 - 2 * 1 * 5);
+  EXPECT_EQ(count(m, Side::inside), 10);
+  EXPECT_EQ(count(m, Side::outside), 0);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vector3d &x = s[i].x;
+    const bool on_face = x.x() == 0 || x.x() == 3 || x.y() == 0 || x.y() == 2;
+    EXPECT_EQ(m.side[i], on_face ? Side::surface : Side::inside) << "sphere " << i;
+  }
+  EXPECT_TRUE(m.reaches_lo && m.reaches_hi);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 3 * 2 * 5, round_off);
+  expect_vector_near(membrane3d::vector_area(m.surface), Vector3d::Zero(), round_off);
+  // each face: p x its area (width x height 5), inwards
+  expect_vector_near(load_on(s, m, [](const Vector3d &x) { return x.x() == 3; }),
+                     Vector3d(-p * 2 * 5, 0, 0), round_off);
+  expect_vector_near(load_on(s, m, [](const Vector3d &x) { return x.x() == 0; }),
+                     Vector3d(p * 2 * 5, 0, 0), round_off);
+  expect_vector_near(load_on(s, m, [](const Vector3d &x) { return x.y() == 2; }),
+                     Vector3d(0, -p * 3 * 5, 0), round_off);
+  expect_vector_near(load_on(s, m, [](const Vector3d &x) { return x.y() == 0; }),
+                     Vector3d(0, p * 3 * 5, 0), round_off);
+}
+
+namespace {
+
+// The 4 x 3 x 5 block with one more sphere out of its x = 3 face, over the window
+// y in [0, 1], z in [2, 3], at gap g from the window's four spheres.
+std::vector<Sphere> block_with_bump(double g) {
+  auto s = simple_cubic(4, 3, 5);
+  s.push_back({Vector3d(3 + std::sqrt((1 + g) * (1 + g) - 0.5), 0.5, 2.5), radius});
+  return s;
+}
+
+bool beyond_face(const Vector3d &x) { return x.x() >= 3; }
+
+} // namespace
+
+// The bump's four links make a square pyramid on the window: the bump is on the
+// membrane, the window's spheres stay on it, and the volume grows by the pyramid's
+// (base 1, height h) / 3; the face's load is still p x its projected area.
+TEST(LateralSurface, BumpAtGapJustBelowTheTolerance) {
+  for (double g : {0.0, radius - 1e-9}) {
+    const auto s = block_with_bump(g);
+    const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+    const double h = s.back().x.x() - 3;
+    EXPECT_EQ(m.side.back(), Side::surface) << "gap " << g;
+    EXPECT_EQ(count(m, Side::surface), 51);
+    EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 30 + h / 3, round_off);
+    expect_vector_near(load_on(s, m, beyond_face), Vector3d(-p * 2 * 5, 0, 0), round_off);
+    expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }), Vector3d::Zero(),
+                       round_off);
+  }
+}
+
+// Just beyond the tolerance the bump has no link: it has escaped, the block is as
+// without it.
+TEST(LateralSurface, BumpAtGapJustAboveTheToleranceHasEscaped) {
+  const auto s = block_with_bump(radius + 1e-9);
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+  EXPECT_EQ(m.side.back(), Side::outside);
+  EXPECT_EQ(count(m, Side::surface), 50);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 30, round_off);
+  EXPECT_EQ(membrane3d::membrane_loads(m, s.size(), p).back(), Vector3d::Zero());
+}
+
+// A sphere far out; a tip on the bump of the last test, linked to the bump only (a
+// dead end: no facet of links holds it); a linked 2 x 2 x 2 cluster away from the
+// block: all outside, the block and its bump as without them.
+TEST(LateralSurface, EscapedSpheresDeadEndAndClusterAreOutside) {
+  auto s = block_with_bump(0);
+  const double h = s.back().x.x() - 3;
+  s.push_back({s.back().x + Vector3d(1, 0, 0), radius});  // the tip
+  s.push_back({Vector3d(9, 1, 2.5), radius});            // far out
+  for (int k = 0; k < 8; ++k)
+    s.push_back({Vector3d(6 + (k & 1), -3 + ((k >> 1) & 1), 1 + ((k >> 2) & 1)), radius});
+  const auto m = membrane3d::lateral_surface(s, touching_platens(simple_cubic(4, 3, 5)), radius);
+  EXPECT_EQ(m.side[60], Side::surface);  // the bump
+  for (std::size_t i = 61; i < s.size(); ++i) EXPECT_EQ(m.side[i], Side::outside) << i;
+  EXPECT_EQ(count(m, Side::surface), 51);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 30 + h / 3, round_off);
+}
+
+// A 4 x 3 x 6 block with a shelf x in {4, 5, 6} on its two upper layers (z = 4, 5):
+// the membrane runs under the shelf (its normal -z), so the loads have an axial part
+// p x the underside's area (3 x 2), and the volume is 3 x 2 x 6 + 3 x 2 x 1.5.
+TEST(LateralSurface, OverhangingShelf) {
+  auto s = simple_cubic(4, 3, 6);
+  for (int k = 4; k < 6; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 4; i < 7; ++i) s.push_back({Vector3d(i, j, k), radius});
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+  // inside: the block's core x in {1, 2}, y = 1 (12) and the shelf's upper core
+  // x in {3, 4, 5}, y = 1, z = 5
+  EXPECT_EQ(count(m, Side::inside), 15);
+  EXPECT_EQ(count(m, Side::surface), 90 - 15);
+  EXPECT_EQ(m.side[2 * 12 + 1 * 4 + 3], Side::surface);  // (3, 1, 2): the face below the shelf
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 36 + 9, round_off);
+  const auto all = [](const Vector3d &) { return true; };
+  expect_vector_near(load_on(s, m, all), Vector3d(0, 0, p * 3 * 2), round_off);
+  EXPECT_NEAR(load_on(s, m, [](const Vector3d &x) { return x.z() == 4 && x.x() >= 3; }).z(),
+              p * 3 * 2, round_off);
+  EXPECT_NEAR(load_on(s, m, [](const Vector3d &x) { return x.x() == 6; }).x(), -p * 2 * 1.5,
+              round_off);
+  EXPECT_NEAR(load_on(s, m, [](const Vector3d &x) { return x.x() == 0; }).x(), p * 2 * 6,
+              round_off);
+  EXPECT_NEAR(load_on(s, m, [](const Vector3d &x) { return x.y() == 0; }).y(),
+              p * (3 * 6 + 3 * 1.5), round_off);
+}
+
+// FCC block m = 2, l = 3 (88 spheres), T = 0.75: the (100) faces' square windows and
+// the windows between the lowest layer and its image in the platen are closed. The
+// membrane is the four faces, the volume (4 h)^2 x H with h = sqrt 2 / 2.
+TEST(LateralSurface, FaceCentredCubicBlock) {
+  const auto s = face_centred_cubic(2, 3);
+  ASSERT_EQ(s.size(), 88u);
+  const Platens platens = touching_platens(s);
+  const auto m = membrane3d::lateral_surface(s, platens, 0.75);
+  const double side = 4 * std::sqrt(2.0) / 2;
+  EXPECT_EQ(count(m, Side::inside), 32);
+  EXPECT_EQ(count(m, Side::surface), 56);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface), side * side * (platens.hi - platens.lo),
+              1e-11);
+  expect_vector_near(load_on(s, m, [side](const Vector3d &x) { return x.x() > side - 1e-9; }),
+                     Vector3d(-p * side * (platens.hi - platens.lo), 0, 0), 1e-11);
+}
+
+// Rings of 12 touching spheres (circumradius R = 1 / (2 sin 15 deg)) stacked in 6
+// layers at spacing 1 around a central column out of their reach: the membrane is the
+// 12-gon prism through the ring centres, volume 6 R^2 sin 30 deg x H; the column is
+// inside.
+TEST(LateralSurface, CylinderOfRingsHasThePrismVolume) {
+  const int n = 12, layers = 6;
+  const double R = 1 / (2 * std::sin(M_PI / n));
+  std::vector<Sphere> s;
+  for (int k = 0; k < layers; ++k) {
+    for (int i = 0; i < n; ++i)
+      s.push_back({Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k),
+                   radius});
+    s.push_back({Vector3d(0, 0, k), radius});
+  }
+  const Platens platens = touching_platens(s);
+  const auto m = membrane3d::lateral_surface(s, platens, radius);
+  EXPECT_EQ(count(m, Side::surface), n * layers);
+  for (int k = 0; k < layers; ++k) EXPECT_EQ(m.side[k * (n + 1) + n], Side::inside);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface),
+              n / 2.0 * R * R * std::sin(2 * M_PI / n) * (platens.hi - platens.lo), 1e-12);
+  expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }), Vector3d::Zero(),
+                     1e-12);
+}
+
+// A block lifted off the lower platen (gap 0.3 > T / 2): the flood runs under it, the
+// membrane has no rim there and pushes the block up by p x its base.
+TEST(LateralSurface, BlockOffThePlatenHasNoRimThere) {
+  const auto s = simple_cubic(4, 3, 5);
+  Platens platens = touching_platens(s);
+  platens.lo -= 0.3;
+  const auto m = membrane3d::lateral_surface(s, platens, radius);
+  EXPECT_FALSE(m.reaches_lo);
+  EXPECT_TRUE(m.reaches_hi);
+  expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }),
+                     Vector3d(0, 0, p * 3 * 2), round_off);
+}
+
+// The input order changes nothing: the same sides, loads (to round-off) and volume.
+TEST(LateralSurface, InputOrderDoesNotMatter) {
+  const auto s = block_with_bump(0.2);
+  std::vector<int> order(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) order[i] = static_cast<int>((i * 37) % s.size());
+  std::vector<Sphere> shuffled;
+  for (int i : order) shuffled.push_back(s[i]);
+  const Platens platens = touching_platens(s);
+  const auto a = membrane3d::lateral_surface(s, platens, radius);
+  const auto b = membrane3d::lateral_surface(shuffled, platens, radius);
+  const auto load_a = membrane3d::membrane_loads(a, s.size(), p);
+  const auto load_b = membrane3d::membrane_loads(b, s.size(), p);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    EXPECT_EQ(a.side[order[k]], b.side[k]) << k;
+    expect_vector_near(load_a[order[k]], load_b[k], round_off);
+  }
+  EXPECT_NEAR(membrane3d::lateral_volume(a.surface), membrane3d::lateral_volume(b.surface),
+              round_off);
+}
+
+TEST(LateralSurface, SpheresOutOfReachAreNoPacking) {
+  std::vector<Sphere> s;
+  for (int k = 0; k < 27; ++k)
+    s.push_back({Vector3d(3 * (k % 3), 3 * (k / 3 % 3), 3 * (k / 9)), radius});
+  EXPECT_THROW(membrane3d::lateral_surface(s, {-1, 7}, radius), std::runtime_error);
+}
+
+TEST(LateralSurface, BadInputIsRefused) {
+  const auto s = simple_cubic(2, 2, 2);
+  const Platens platens = touching_platens(s);
+  EXPECT_THROW(membrane3d::lateral_surface(s, {1.5, -0.5}, radius), std::invalid_argument);
+  EXPECT_THROW(membrane3d::lateral_surface(s, {0.5, 1.5}, radius), std::invalid_argument);
+  EXPECT_THROW(membrane3d::lateral_surface({s[0], s[1], s[2]}, platens, radius),
+               std::invalid_argument);
+  EXPECT_THROW(membrane3d::lateral_surface(s, platens, -0.1), std::invalid_argument);
+  EXPECT_THROW(membrane3d::lateral_surface(s, platens, std::nan("")), std::invalid_argument);
+  auto bad = s;
+  bad[3].r = 0;
+  EXPECT_THROW(membrane3d::lateral_surface(bad, platens, radius), std::invalid_argument);
+  bad = s;
+  bad[2].x.x() = std::nan("");
+  EXPECT_THROW(membrane3d::lateral_surface(bad, platens, radius), std::invalid_argument);
+}
