@@ -11,31 +11,37 @@ namespace membrane3d {
 
 namespace {
 
-// The spheres and their images in the platens; image k stands for sphere original[k].
+// The spheres and their images in the platens; entry k is sphere original[k] or its
+// image in the lower (-1) or upper (+1) platen.
 struct Mirrored {
   std::vector<Sphere> spheres;
-  std::vector<bool> image;
-  std::vector<int> original;
+  std::vector<bool> sealed;
+  std::vector<int> original, image;
 };
+
+Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p) {
+  Eigen::Vector3d y = x;
+  if (image != 0) y.z() = 2 * (image < 0 ? p.lo : p.hi) - x.z();
+  return y;
+}
 
 Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
                            double tolerance) {
   double r_max = 0;
   for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
   const double band = 3 * (2 * r_max + tolerance);
-  Mirrored m{spheres, std::vector<bool>(spheres.size(), false), {}};
-  for (std::size_t i = 0; i < spheres.size(); ++i) m.original.push_back(static_cast<int>(i));
-  auto add_image = [&m](const Sphere &s, int i, double plane) {
-    Sphere image = s;
-    image.x.z() = 2 * plane - s.x.z();
-    m.spheres.push_back(image);
-    m.image.push_back(true);
+  Mirrored m;
+  auto add = [&m, &platens](const Sphere &s, int i, int image) {
+    m.spheres.push_back({image_position(s.x, image, platens), s.r});
+    m.sealed.push_back(image != 0);
     m.original.push_back(i);
+    m.image.push_back(image);
   };
+  for (std::size_t i = 0; i < spheres.size(); ++i) add(spheres[i], static_cast<int>(i), 0);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const Sphere &s = spheres[i];
-    if (s.x.z() - platens.lo < band) add_image(s, static_cast<int>(i), platens.lo);
-    if (platens.hi - s.x.z() < band) add_image(s, static_cast<int>(i), platens.hi);
+    if (s.x.z() - platens.lo < band) add(s, static_cast<int>(i), -1);
+    if (platens.hi - s.x.z() < band) add(s, static_cast<int>(i), +1);
   }
   return m;
 }
@@ -49,22 +55,24 @@ struct ClipPoint {
   int vertex;  // the facet vertex it is, -1 for a cut point
 };
 
+// Facets given by their vertices' ids (shared between facets), positions and spheres.
 class PlatenClip {
 public:
-  PlatenClip(const Mirrored &m, const Platens &p) : m_(m), platens_(p) {}
+  PlatenClip(std::int64_t n_ids, const Platens &p) : n_ids_(n_ids), platens_(p) {}
 
-  void add_facet(const std::array<int, 3> &f) {
+  void add_facet(const std::array<int, 3> &f, const std::array<Eigen::Vector3d, 3> &x,
+                 const std::array<int, 3> &sphere) {
     std::vector<ClipPoint> poly;
     for (int j = 0; j < 3; ++j) {
       std::array<double, 3> w{0, 0, 0};
       w[j] = 1;
-      poly.push_back({m_.spheres[f[j]].x, w, f[j], j});
+      poly.push_back({x[j], w, f[j], j});
     }
     poly = clip(poly, f, platens_.lo, +1, 1);
     poly = clip(poly, f, platens_.hi, -1, 2);
     if (poly.size() < 3) return;
     std::vector<int> corner;
-    for (const ClipPoint &q : poly) corner.push_back(corner_index(q, f));
+    for (const ClipPoint &q : poly) corner.push_back(corner_index(q, f, sphere));
     for (std::size_t k = 1; k + 1 < corner.size(); ++k)
       out_.surface.facets.push_back({corner[0], corner[k], corner[k + 1]});
   }
@@ -72,14 +80,13 @@ public:
   LateralSurface result() && { return std::move(out_); }
 
 private:
-  const Mirrored &m_;
+  std::int64_t n_ids_;
   Platens platens_;
   LateralSurface out_;
   std::unordered_map<std::int64_t, int> by_key_;
 
   std::int64_t edge_key(int u, int v, int plane) const {
-    const std::int64_t n = static_cast<std::int64_t>(m_.spheres.size());
-    return (static_cast<std::int64_t>(std::min(u, v)) * n + std::max(u, v)) * 3 + plane;
+    return (static_cast<std::int64_t>(std::min(u, v)) * n_ids_ + std::max(u, v)) * 3 + plane;
   }
 
   // Sutherland-Hodgman against the half-space side * (z - level) >= 0. A cut on an edge
@@ -106,7 +113,8 @@ private:
     return out;
   }
 
-  int corner_index(const ClipPoint &q, const std::array<int, 3> &f) {
+  int corner_index(const ClipPoint &q, const std::array<int, 3> &f,
+                   const std::array<int, 3> &sphere) {
     const std::int64_t key = q.vertex >= 0 ? edge_key(f[q.vertex], f[q.vertex], 0) : q.key;
     if (key >= 0) {
       const auto found = by_key_.find(key);
@@ -115,7 +123,7 @@ private:
     Corner c{{-1, -1, -1}, {0, 0, 0}};
     for (int j = 0; j < 3; ++j) {
       if (q.w[j] == 0) continue;
-      const int s = m_.original[f[j]];
+      const int s = sphere[j];
       int slot = 0;
       while (c.sphere[slot] >= 0 && c.sphere[slot] != s) ++slot;
       c.sphere[slot] = s;
@@ -147,26 +155,80 @@ void check_platens(const std::vector<Sphere> &spheres, const Platens &p) {
 
 } // namespace
 
-LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
-                               double tolerance) {
+MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Platens &platens,
+                                 double tolerance) {
   check_platens(spheres, platens);
   const Mirrored m = mirror_in_platens(spheres, platens, tolerance);
-  const Boundary boundary = exterior_boundary(m.spheres, m.image, tolerance);
-  PlatenClip clip(m, platens);
-  for (const auto &f : boundary.facets) clip.add_facet(f);
+  const Boundary boundary = exterior_boundary(m.spheres, m.sealed, tolerance);
+  if (boundary.facets.empty())
+    throw std::runtime_error("no surface: no facet of links between the platens separates the " +
+                             std::to_string(spheres.size()) +
+                             " spheres from the outside (are they a packing? tolerance " +
+                             std::to_string(tolerance) + ")");
+  MembraneTopology t;
+  for (const auto &f : boundary.facets) {
+    std::array<MembraneVertex, 3> facet;
+    for (int j = 0; j < 3; ++j) facet[j] = {m.original[f[j]], m.image[f[j]]};
+    t.facets.push_back(facet);
+  }
+  t.side.assign(boundary.side.begin(), boundary.side.begin() + spheres.size());
+  return t;
+}
+
+MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members) {
+  std::vector<int> index(topology.side.size(), -1);
+  for (const auto &f : topology.facets)
+    for (const MembraneVertex &v : f) index.at(v.sphere) = 0;
+  for (std::size_t i = 0; i < topology.side.size(); ++i)
+    if (topology.side[i] == Side::outside) index[i] = 0;
+  MembraneTopology out;
+  members.clear();
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (index[i] == 0) {
+      index[i] = static_cast<int>(members.size());
+      members.push_back(static_cast<int>(i));
+      out.side.push_back(topology.side[i]);
+    }
+  for (auto f : topology.facets) {
+    for (MembraneVertex &v : f) v.sphere = index[v.sphere];
+    out.facets.push_back(f);
+  }
+  return out;
+}
+
+LateralSurface place_membrane(const MembraneTopology &topology,
+                              const std::vector<Sphere> &spheres, const Platens &platens) {
+  check_platens(spheres, platens);
+  if (topology.side.size() != spheres.size())
+    throw std::invalid_argument("a topology of " + std::to_string(topology.side.size()) +
+                                " spheres placed on " + std::to_string(spheres.size()));
+  PlatenClip clip(3 * static_cast<std::int64_t>(spheres.size()), platens);
+  for (const auto &f : topology.facets) {
+    std::array<int, 3> id, sphere;
+    std::array<Eigen::Vector3d, 3> x;
+    for (int j = 0; j < 3; ++j) {
+      sphere[j] = f[j].sphere;
+      if (sphere[j] < 0 || sphere[j] >= static_cast<int>(spheres.size()))
+        throw std::invalid_argument("a facet has sphere " + std::to_string(sphere[j]) + " of " +
+                                    std::to_string(spheres.size()));
+      id[j] = 3 * sphere[j] + f[j].image + 1;
+      x[j] = image_position(spheres[sphere[j]].x, f[j].image, platens);
+    }
+    clip.add_facet(id, x, sphere);
+  }
   LateralSurface out = std::move(clip).result();
-  out.side.assign(boundary.side.begin(), boundary.side.begin() + spheres.size());
+  out.side = topology.side;
   for (Side &s : out.side)
     if (s == Side::surface) s = Side::inside;  // set again below from the loads
   for (const Corner &c : out.corners)
     for (int j = 0; j < 3; ++j)
       if (c.sphere[j] >= 0 && c.weight[j] > 0) out.side[c.sphere[j]] = Side::surface;
-  if (out.surface.facets.empty())
-    throw std::runtime_error("no surface: no facet of links between the platens separates the " +
-                             std::to_string(spheres.size()) +
-                             " spheres from the outside (are they a packing? tolerance " +
-                             std::to_string(tolerance) + ")");
   return out;
+}
+
+LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
+                               double tolerance) {
+  return place_membrane(detect_membrane(spheres, platens, tolerance), spheres, platens);
 }
 
 std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,

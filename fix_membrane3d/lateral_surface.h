@@ -50,10 +50,38 @@ struct LateralSurface {
   bool reaches_lo = false, reaches_hi = false;  // a rim on each platen
 };
 
-// Throws std::invalid_argument for platens not in order or a centre not strictly
-// between them (naming the sphere), and what exterior_boundary throws;
-// std::runtime_error when no surface separates the spheres from the outside (no
-// packing: no closed shell of links).
+// A vertex of the membrane: a sphere, or its image in the lower (-1) or upper (+1) platen.
+struct MembraneVertex {
+  int sphere;
+  int image;
+};
+
+// What a detection finds: the membrane's facets, counter-clockwise from outside, and
+// each sphere's side. It holds while the spheres move a little: the membrane is placed
+// on the spheres' positions of each step (place_membrane) and found again now and then.
+struct MembraneTopology {
+  std::vector<std::array<MembraneVertex, 3>> facets;
+  std::vector<Side> side;  // per sphere
+};
+
+// The topology of the spheres' membrane. Throws std::invalid_argument for platens not
+// in order, a centre not strictly between them (naming the sphere) and what
+// exterior_boundary throws; std::runtime_error when no surface separates the spheres
+// from the outside (no packing: no closed shell of links).
+MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Platens &platens,
+                                 double tolerance);
+
+// The topology over its members only: the spheres on a facet or outside, renumbered in
+// their order; `members` gets their indices in the detection's spheres.
+MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members);
+
+// The membrane on `spheres` (indexed as the topology): facets clipped at the platens,
+// corners, loads' weights. Throws std::invalid_argument for platens not in order, a
+// centre not strictly between them, or a facet whose sphere is not in `spheres`.
+LateralSurface place_membrane(const MembraneTopology &topology,
+                              const std::vector<Sphere> &spheres, const Platens &platens);
+
+// detect_membrane, then place_membrane on the same spheres.
 LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
                                double tolerance);
 

@@ -250,3 +250,34 @@ TEST(LateralSurface, BadInputIsRefused) {
   bad[2].x.x() = std::nan("");
   EXPECT_THROW(membrane3d::lateral_surface(bad, platens, radius), std::invalid_argument);
 }
+
+// A topology holds while the spheres move: placed on the block stretched by 10 % in x
+// it gives the stretched block's volume; over its members only (the 50 face spheres
+// of the bump-free block and the escaped bump) it gives the same loads.
+TEST(LateralSurface, TopologyPlacedOnMovedSpheresAndOnItsMembers) {
+  const auto s = block_with_bump(radius + 0.1);  // the bump has escaped
+  const Platens platens = touching_platens(s);
+  const auto topology = membrane3d::detect_membrane(s, platens, radius);
+  auto stretched = s;
+  for (Sphere &x : stretched) x.x.x() *= 1.1;
+  const auto moved = membrane3d::place_membrane(topology, stretched, platens);
+  EXPECT_NEAR(membrane3d::lateral_volume(moved.surface), 3.3 * 2 * 5, 1e-12);
+
+  std::vector<int> members;
+  const auto mine = membrane3d::members_only(topology, members);
+  ASSERT_EQ(members.size(), 51u);
+  EXPECT_EQ(members.back(), 60);
+  EXPECT_EQ(mine.side.back(), Side::outside);
+  std::vector<Sphere> member_spheres;
+  for (int i : members) member_spheres.push_back(s[i]);
+  const auto all = membrane3d::place_membrane(topology, s, platens);
+  const auto few = membrane3d::place_membrane(mine, member_spheres, platens);
+  const auto load_all = membrane3d::membrane_loads(all, s.size(), p);
+  const auto load_few = membrane3d::membrane_loads(few, members.size(), p);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    EXPECT_EQ(load_few[k], load_all[members[k]]) << k;
+    EXPECT_EQ(few.side[k], all.side[members[k]]) << k;
+  }
+  EXPECT_THROW(membrane3d::place_membrane(topology, member_spheres, platens),
+               std::invalid_argument);
+}
