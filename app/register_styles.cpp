@@ -19,6 +19,7 @@
 
 #include "compute_fabric.h"
 #include "fix_membrane2d.h"
+#include "fix_membrane3d.h"
 #include "fix_damping_local.h"
 #include "fix_stability_guard.h"
 
@@ -70,6 +71,7 @@ void register_project_styles(LAMMPS *lmp)
 #define FIX_CLASS
 #define FixStyle(key, Class) fix_map[#key] = &create_fix<Class>;
 #include "fix_membrane2d.h"
+#include "fix_membrane3d.h"
 #include "fix_damping_local.h"
 #include "fix_stability_guard.h"
 #undef FixStyle

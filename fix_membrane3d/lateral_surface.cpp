@@ -243,4 +243,29 @@ std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
   return load;
 }
 
+Eigen::Vector2d membrane_axis(const LateralSurface &membrane) {
+  const Surface &s = membrane.surface;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  double area = 0;
+  for (const auto &f : s.facets) {
+    const double a = facet_vector_area(s.points[f[0]], s.points[f[1]], s.points[f[2]]).norm();
+    sum += a * (s.points[f[0]] + s.points[f[1]] + s.points[f[2]]).head<2>() / 3;
+    area += a;
+  }
+  return area > 0 ? Eigen::Vector2d(sum / area) : Eigen::Vector2d::Zero();
+}
+
+void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres,
+                      double p, std::vector<Eigen::Vector3d> &load) {
+  const Eigen::Vector2d axis = membrane_axis(membrane);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    if (membrane.side.at(i) != Side::outside) continue;
+    const Eigen::Vector2d inwards = axis - spheres[i].x.head<2>();
+    const double distance = inwards.norm();
+    if (distance == 0) continue;
+    const double push = p * M_PI * spheres[i].r * spheres[i].r / distance;
+    load.at(i) += Eigen::Vector3d(push * inwards.x(), push * inwards.y(), 0);
+  }
+}
+
 } // namespace membrane3d

@@ -89,6 +89,14 @@ LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens
 std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
                                             std::size_t n_spheres, double p);
 
+// The sample's axis: the area-weighted centroid (x, y) of the membrane's facets.
+Eigen::Vector2d membrane_axis(const LateralSurface &membrane);
+
+// Adds to `load` the push on each escaped sphere: p pi r^2 horizontally towards the
+// axis (nothing for a sphere on the axis).
+void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres,
+                      double p, std::vector<Eigen::Vector3d> &load);
+
 } // namespace membrane3d
 
 #endif

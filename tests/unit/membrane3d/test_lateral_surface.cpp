@@ -4,6 +4,7 @@
 #include "lateral_surface.h"
 #include "packings.h"
 #include "shapes.h"
+#include "surface_closure.h"
 
 #include <gtest/gtest.h>
 
@@ -280,4 +281,43 @@ TEST(LateralSurface, TopologyPlacedOnMovedSpheresAndOnItsMembers) {
   }
   EXPECT_THROW(membrane3d::place_membrane(topology, member_spheres, platens),
                std::invalid_argument);
+}
+
+// The axis of the 4 x 3 block is (1.5, 1); the escaped bump at y = 0.5 is pushed with
+// p pi r^2 along (1.5 - x, 1 - 0.5), normalised.
+TEST(LateralSurface, EscapedSphereIsPushedTowardsTheAxis) {
+  const auto s = block_with_bump(radius + 0.1);
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+  const Eigen::Vector2d axis = membrane3d::membrane_axis(m);
+  EXPECT_NEAR(axis.x(), 1.5, 1e-12);
+  EXPECT_NEAR(axis.y(), 1.0, 1e-12);
+  std::vector<Vector3d> load(s.size(), Vector3d::Zero());
+  membrane3d::add_escape_loads(m, s, p, load);
+  const Vector3d towards(1.5 - s.back().x.x(), 0.5, 0);
+  expect_vector_near(load.back(), p * M_PI * radius * radius * towards.normalized(), 1e-12);
+  for (std::size_t i = 0; i + 1 < s.size(); ++i) EXPECT_EQ(load[i], Vector3d::Zero());
+}
+
+// Independent checks (surface_closure.h): the membrane closed by caps at its rims
+// encloses the volume lateral_volume gives, and its winding number is 1 about every
+// sphere the flood put inside and 0 about every escaped one.
+TEST(LateralSurface, CapsAndWindingNumberAgreeWithTheFlood) {
+  auto shelf = simple_cubic(4, 3, 6);
+  for (int k = 4; k < 6; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 4; i < 7; ++i) shelf.push_back({Vector3d(i, j, k), radius});
+  auto bumps = block_with_bump(0.3);
+  bumps.push_back({Vector3d(1.5, -0.9, 2.5), radius});  // touching nothing: escaped
+  for (const auto &s : {shelf, bumps, face_centred_cubic(2, 3)}) {
+    const double tolerance = s.size() == 88 ? 0.75 : radius;
+    const auto m = membrane3d::lateral_surface(s, touching_platens(s), tolerance);
+    const auto closed = membrane3d::close_with_caps(m.surface);
+    EXPECT_NEAR(membrane3d::enclosed_volume(closed), membrane3d::lateral_volume(m.surface), 1e-12);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (m.side[i] == Side::surface) continue;
+      EXPECT_NEAR(membrane3d::winding_number(closed, s[i].x), m.side[i] == Side::inside ? 1 : 0,
+                  1e-9)
+          << "sphere " << i << " of " << s.size();
+    }
+  }
 }

@@ -1,5 +1,6 @@
 // Closing the lateral surface of a triaxial sample at its platens, and telling inside
-// from outside (fix membrane3d). No LIGGGHTS here: unit-tested in tests/unit/membrane3d.
+// from outside: an independent check, for the membrane3d tests, of the volume
+// lateral_volume gives and of the spheres the flood finds inside and outside.
 //
 // The lateral surface (surface_loads.h: facets counter-clockwise from outside) is open
 // at its rims. Each rim is closed by a cap: a fan of facets from the rim's centroid,

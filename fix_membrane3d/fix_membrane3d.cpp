@@ -1,0 +1,296 @@
+/* ----------------------------------------------------------------------
+   fix membrane3d: see fix_membrane3d.h and doc/fix_membrane3d.md
+
+   Every rank gathers the same spheres in the same order (membrane3d_gather.h)
+   and computes the same membrane and loads, so neither depends on the number
+   of ranks or the processor grid; loads are added to owned atoms only.
+------------------------------------------------------------------------- */
+
+#include "fix_membrane3d.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "update.h"
+
+#include "membrane3d_record.h"
+#include "style_args.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+
+const char *const PREFIX = "Fix membrane3d: "; // every message starts so (doc/messages.md)
+
+// The default tolerance as a fraction of the group's mean diameter: the smallest at
+// which the flood found no surface sphere more than two diameters inside the skin of
+// a poured polydisperse cylinder, with a margin (doc/fix_membrane3d.md).
+const double DEFAULT_TOLERANCE = 0.7;
+
+const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every";
+const char *const USE_PRESSURE =
+    "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
+const char *const USE_ZLO = "zlo Z: the lower platen surface (length), a number or v_name";
+const char *const USE_ZHI = "zhi Z: the upper platen surface (length), a number or v_name";
+const char *const USE_EVERY = "every N: find the membrane again every N >= 1 steps";
+const std::string USE_TOLERANCE =
+    "tolerance T: the largest gap (length) at which two spheres are linked, default " +
+    number_text(DEFAULT_TOLERANCE) + " x the mean diameter";
+
+} // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg) : Fix(lammps, narg, arg)
+{
+  if (domain->dimension != 3) fail("requires dimension 3", "for 2D samples use fix membrane2d");
+  if (!atom->radius_flag) fail("requires atom style sphere", "use atom_style granular");
+  if (atom->tag_enable == 0 || atom->map_style == 0)
+    fail("requires atom IDs and an atom map", "use atom_modify map array");
+  if (domain->zperiodic)
+    fail("the box is periodic in z", "the platens bound the sample in z: use boundary f f f");
+
+  bool have_pressure = false, have_zlo = false, have_zhi = false;
+  StyleArgs args(lmp, PREFIX, narg, arg, 3);
+  while (args.more()) {
+    const std::string key = args.keyword();
+    if (key == "pressure") {
+      pressure_in.read(args, ScalarInput::Sign::NonNegative, USE_PRESSURE);
+      have_pressure = true;
+    } else if (key == "zlo") {
+      zlo_in.read(args, ScalarInput::Sign::Any, USE_ZLO);
+      have_zlo = true;
+    } else if (key == "zhi") {
+      zhi_in.read(args, ScalarInput::Sign::Any, USE_ZHI);
+      have_zhi = true;
+    } else if (key == "tolerance") {
+      tolerance_given = args.non_negative(USE_TOLERANCE);
+    } else if (key == "every") {
+      every = static_cast<int>(args.integer(1, 1000000000L, USE_EVERY));
+    } else {
+      args.unknown(KEYWORDS);
+    }
+  }
+  if (!have_pressure) args.required("pressure", USE_PRESSURE);
+  if (!have_zlo) args.required("zlo", USE_ZLO);
+  if (!have_zhi) args.required("zhi", USE_ZHI);
+
+  vector_flag = 1;
+  size_vector = OUTPUT_SIZE;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  std::fill(output, output + OUTPUT_SIZE, 0.0);
+}
+
+int FixMembrane3d::setmask()
+{
+  return POST_FORCE;
+}
+
+[[noreturn]] void FixMembrane3d::fail(const char *what, const char *advice)
+{
+  error->all(FLERR, (std::string(PREFIX) + what + "; " + advice).c_str());
+  std::abort(); // Error::all does not return
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane3d::init()
+{
+  pressure_in.init(lmp, PREFIX, "pressure");
+  zlo_in.init(lmp, PREFIX, "zlo");
+  zhi_in.init(lmp, PREFIX, "zhi");
+
+  double sums[2] = {0.0, 0.0}; // diameters, spheres
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      sums[0] += 2.0 * atom->radius[i];
+      sums[1] += 1.0;
+    }
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
+  if (sums[1] == 0.0) fail("the fix group has no atoms", "give it the sample's spheres");
+  tolerance = tolerance_given >= 0.0 ? tolerance_given : DEFAULT_TOLERANCE * sums[0] / sums[1];
+}
+
+void FixMembrane3d::evaluate_inputs()
+{
+  pressure = pressure_in.evaluate_checked(lmp, PREFIX, "pressure", true);
+  platens.lo = zlo_in.evaluate_checked(lmp, PREFIX, "zlo", false);
+  platens.hi = zhi_in.evaluate_checked(lmp, PREFIX, "zhi", false);
+  if (!(platens.lo < platens.hi))
+    error->all(FLERR, keyword_message(PREFIX, "zlo", zlo_in.text(),
+                                      "is " + number_text(platens.lo) + ", not below zhi = " +
+                                          number_text(platens.hi) + " at step " +
+                                          std::to_string(update->ntimestep) +
+                                          "; zlo is the lower platen surface, zhi the upper one")
+                          .c_str());
+}
+
+void FixMembrane3d::setup(int vflag)
+{
+  warned_rim = false;
+  post_force(vflag);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane3d::post_force(int)
+{
+  evaluate_inputs();
+  bool due = member_tags.empty() || update->ntimestep - last_detection >= every;
+  if (!due) {
+    gather_tags(lmp, member_tags, members);
+    due = members.tags.size() != member_tags.size(); // an atom was lost: find it anew
+  }
+  if (due) detect();
+  place_and_apply();
+}
+
+// Names the atom (by ID) whose centre is not strictly between the platens.
+void FixMembrane3d::check_between_platens(const GatheredSpheres &g)
+{
+  for (std::size_t k = 0; k < g.spheres.size(); k++) {
+    const double z = g.spheres[k].x.z();
+    if (z > platens.lo && z < platens.hi) continue;
+    error->all(FLERR, (std::string(PREFIX) + "atom " + std::to_string(g.tags[k]) + " at z = " +
+                       number_text(z) + " is not between zlo = " + number_text(platens.lo) +
+                       " and zhi = " + number_text(platens.hi) + " at step " +
+                       std::to_string(update->ntimestep) +
+                       "; the platens must enclose every sphere centre of the group")
+                          .c_str());
+  }
+}
+
+void FixMembrane3d::detect()
+{
+  GatheredSpheres all;
+  gather_group(lmp, groupbit, all);
+  check_between_platens(all);
+  std::vector<int> index;
+  try {
+    topology = membrane3d::members_only(membrane3d::detect_membrane(all.spheres, platens, tolerance),
+                                        index);
+  } catch (const std::exception &e) {
+    fail(e.what(), "the group must be one packing whose spheres are linked (gaps within the "
+                   "tolerance)");
+  }
+  member_tags.clear();
+  members.tags.clear();
+  members.spheres.clear();
+  for (int k : index) {
+    member_tags.push_back(all.tags[k]);
+    members.tags.push_back(all.tags[k]);
+    members.spheres.push_back(all.spheres[k]);
+  }
+  last_detection = update->ntimestep;
+  detections += 1.0;
+}
+
+void FixMembrane3d::place_and_apply()
+{
+  check_between_platens(members);
+  membrane3d::LateralSurface membrane;
+  try {
+    membrane = membrane3d::place_membrane(topology, members.spheres, platens);
+  } catch (const std::exception &e) {
+    fail(e.what(), "the membrane found at the last detection cannot be placed");
+  }
+  if (!(membrane.reaches_lo && membrane.reaches_hi) && !warned_rim && comm->me == 0) {
+    const std::string which = !membrane.reaches_lo ? "lower (zlo)" : "upper (zhi)";
+    error->warning(FLERR, (std::string(PREFIX) + "the membrane does not reach the " + which +
+                           " platen at step " + std::to_string(update->ntimestep) +
+                           ": no sphere is within tolerance/2 of it, so the membrane closes over "
+                           "that end of the sample and presses on it")
+                              .c_str());
+  }
+  if (!(membrane.reaches_lo && membrane.reaches_hi)) warned_rim = true;
+
+  std::vector<Eigen::Vector3d> load =
+      membrane3d::membrane_loads(membrane, members.spheres.size(), pressure);
+  Eigen::Vector3d net = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d &f : load) net += f;
+  membrane3d::add_escape_loads(membrane, members.spheres, pressure, load);
+
+  double **f = atom->f;
+  for (std::size_t k = 0; k < member_tags.size(); k++) {
+    const int i = atom->map(member_tags[k]);
+    if (i < 0 || i >= atom->nlocal) continue;
+    for (int d = 0; d < 3; d++) f[i][d] += load[k][d];
+  }
+
+  int on_surface = 0, escaped = 0;
+  for (membrane3d::Side s : membrane.side) {
+    on_surface += s == membrane3d::Side::surface;
+    escaped += s == membrane3d::Side::outside;
+  }
+  const double volume = membrane3d::lateral_volume(membrane.surface);
+  output[VOLUME] = volume;
+  output[EQUIVALENT_RADIUS] = membrane3d::equivalent_radius(volume, platens.hi - platens.lo);
+  output[MEMBRANE_SPHERES] = on_surface;
+  output[ESCAPED_SPHERES] = escaped;
+  output[FACETS] = static_cast<double>(membrane.surface.facets.size());
+  output[DETECTIONS] = detections;
+  output[AXIAL_FORCE] = net.z();
+  output[LATERAL_FORCE] = net.head<2>().norm();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMembrane3d::write_restart(FILE *fp)
+{
+  membrane3d::Membrane3dState state;
+  state.tolerance_given = tolerance_given;
+  state.every = every;
+  state.last_detection = static_cast<double>(last_detection);
+  state.detections = detections;
+  state.member_tags = member_tags;
+  state.topology = topology;
+  const std::vector<double> rec = membrane3d::write_record(state);
+  if (comm->me == 0) {
+    const int size = static_cast<int>(rec.size() * sizeof(double));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(rec.data(), sizeof(double), rec.size(), fp);
+  }
+}
+
+void FixMembrane3d::restart(char *raw)
+{
+  membrane3d::Membrane3dState state;
+  const std::string why = membrane3d::read_record(reinterpret_cast<const double *>(raw),
+                                                  static_cast<size_t>(-1) / sizeof(double), state);
+  if (!why.empty())
+    error->all(FLERR, (std::string(PREFIX) + "cannot read fix " + id +
+                       "'s record in the restart file: " + why +
+                       "; unfix it before write_restart, or define it anew after read_restart")
+                          .c_str());
+  if (state.tolerance_given != tolerance_given || state.every != every) {
+    if (comm->me == 0)
+      error->warning(FLERR, (std::string(PREFIX) + "fix " + id +
+                             " is defined with another tolerance or every than in the restart "
+                             "file: the membrane is found anew")
+                                .c_str());
+    return;
+  }
+  detections = state.detections;
+  last_detection = static_cast<bigint>(state.last_detection);
+  member_tags = state.member_tags;
+  topology = state.topology;
+}
+
+double FixMembrane3d::memory_usage()
+{
+  return static_cast<double>(member_tags.capacity() * sizeof(int) +
+                             topology.facets.capacity() * sizeof(topology.facets[0]) +
+                             members.spheres.capacity() * sizeof(membrane3d::Sphere));
+}

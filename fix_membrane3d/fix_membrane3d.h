@@ -1,0 +1,83 @@
+/* ----------------------------------------------------------------------
+   fix membrane3d: a flexible latex membrane around a 3D triaxial sample
+   between two platens normal to z. The outer surface of the packing is
+   found by flooding the spheres' regular triangulation from outside
+   (exterior_flood.h), clipped at the platens (lateral_surface.h), and the
+   confining pressure acts on it as the consistent loads of its facets;
+   escaped spheres are pushed back. See doc/fix_membrane3d.md. This class
+   gathers the spheres (membrane3d_gather.h), calls the core and applies
+   the loads to owned atoms.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+// clang-format off
+FixStyle(membrane3d,FixMembrane3d)
+// clang-format on
+
+#else
+
+#ifndef LIGGGHTS_MEMBRANE_FIX_MEMBRANE3D_H
+#define LIGGGHTS_MEMBRANE_FIX_MEMBRANE3D_H
+
+#include <cstdio>
+#include <vector>
+
+#include "fix.h"
+#include "lateral_surface.h"
+#include "membrane3d_gather.h"
+#include "scalar_input.h"
+
+namespace LAMMPS_NS {
+
+class FixMembrane3d : public Fix {
+ public:
+  // the global vector (doc/fix_membrane3d.md, Output)
+  enum Output {
+    VOLUME, EQUIVALENT_RADIUS, MEMBRANE_SPHERES, ESCAPED_SPHERES, FACETS, DETECTIONS,
+    AXIAL_FORCE, LATERAL_FORCE, OUTPUT_SIZE
+  };
+
+  FixMembrane3d(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void post_force(int);
+  double compute_vector(int n) { return output[n]; }
+  // restart: the last detection (its topology over atom IDs, its step) and the
+  // counter, so that a run continued from the file gives the output of one
+  // straight through
+  void write_restart(FILE *);
+  void restart(char *);
+  double memory_usage();
+
+ private:
+  ScalarInput pressure_in, zlo_in, zhi_in; // numbers or v_name
+  double tolerance_given = -1.0;           // -1: the default, from the mean diameter
+  int every = 1;
+  double tolerance = 0.0;
+
+  // the last detection: its topology over the member atoms, their IDs, its step
+  membrane3d::MembraneTopology topology;
+  std::vector<int> member_tags;
+  bigint last_detection = -1;
+  double detections = 0.0;
+
+  // this step
+  GatheredSpheres members; // the member atoms now, in member_tags' order
+  double pressure = 0.0;
+  membrane3d::Platens platens{0.0, 0.0};
+  bool warned_rim = false;
+  double output[OUTPUT_SIZE];
+
+  void evaluate_inputs();
+  void check_between_platens(const GatheredSpheres &g);
+  void detect();
+  void place_and_apply();
+  [[noreturn]] void fail(const char *what, const char *advice);
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif

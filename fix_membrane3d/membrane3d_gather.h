@@ -1,0 +1,24 @@
+// The spheres fix membrane3d works with, the same on every rank and sorted by atom ID,
+// so that every rank finds the same membrane whatever the number of ranks and the
+// processor grid.
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_GATHER_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE3D_GATHER_H
+
+#include <vector>
+
+#include "lammps.h"
+
+#include "exterior_flood.h"
+
+struct GatheredSpheres {
+  std::vector<int> tags;                   // ascending
+  std::vector<membrane3d::Sphere> spheres; // in the same order
+};
+
+// Every atom of the group.
+void gather_group(LAMMPS_NS::LAMMPS *lmp, int groupbit, GatheredSpheres &out);
+
+// The atoms of these IDs (ascending) that still exist: the caller compares the count.
+void gather_tags(LAMMPS_NS::LAMMPS *lmp, const std::vector<int> &tags, GatheredSpheres &out);
+
+#endif

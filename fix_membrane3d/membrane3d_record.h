@@ -1,0 +1,31 @@
+// The restart record of fix membrane3d (no LIGGGHTS: unit-tested in
+// tests/unit/membrane3d): its definition, the last detection (the topology over the
+// member atoms' IDs and its step) and the detection counter.
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
+
+#include "lateral_surface.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace membrane3d {
+
+struct Membrane3dState {
+  double tolerance_given = -1;  // as given, -1 for the default
+  int every = 1;
+  double last_detection = -1;   // step
+  double detections = 0;
+  std::vector<int> member_tags;
+  MembraneTopology topology;    // over the members
+};
+
+std::vector<double> write_record(const Membrane3dState &state);
+
+// Empty when `state` was read; else why not (another format, cut or corrupt).
+std::string read_record(const double *data, std::size_t n, Membrane3dState &state);
+
+} // namespace membrane3d
+
+#endif
