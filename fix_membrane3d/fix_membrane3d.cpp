@@ -20,6 +20,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "modify.h"
 #include "update.h"
 
 #include "membrane3d_record.h"
@@ -120,7 +121,29 @@ void FixMembrane3d::init()
     }
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   if (sums[1] == 0.0) fail("the fix group has no atoms", "give it the sample's spheres");
+  check_other_membranes();
   tolerance = tolerance_given >= 0.0 ? tolerance_given : DEFAULT_TOLERANCE * sums[0] / sums[1];
+}
+
+// Two membranes on one sphere would press it twice.
+void FixMembrane3d::check_other_membranes()
+{
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (other == this || strcmp(other->style, style) != 0) continue;
+    double shared = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) shared += 1.0;
+    MPI_Allreduce(MPI_IN_PLACE, &shared, 1, MPI_DOUBLE, MPI_SUM, world);
+    if (shared == 0.0) continue;
+    const bool first = f < modify->find_fix(id);
+    error->all(FLERR, (std::string(PREFIX) + "fixes '" + (first ? other->id : id) + "' and '" +
+                       (first ? id : other->id) + "' are both membrane3d on " +
+                       number_text(shared) +
+                       " spheres: one membrane per sample (unfix one; two samples need groups "
+                       "with no sphere in common)")
+                          .c_str());
+  }
 }
 
 void FixMembrane3d::evaluate_inputs()

@@ -70,6 +70,7 @@ class FixMembrane3d : public Fix {
   bool warned_rim = false;
   double output[OUTPUT_SIZE];
 
+  void check_other_membranes();
   void evaluate_inputs();
   void check_between_platens(const GatheredSpheres &g);
   void detect();
