@@ -176,7 +176,11 @@ void FixMembrane3d::post_force(int)
     gather_tags(lmp, member_tags, members);
     due = members.tags.size() != member_tags.size(); // an atom was lost: find it anew
   }
-  if (due) detect();
+  // one decision for all ranks: a rank that detected alone would wait forever in the
+  // gather (every rank holds the same state, so this only guards against the unforeseen)
+  int due_any = due ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &due_any, 1, MPI_INT, MPI_MAX, world);
+  if (due_any) detect();
   place_and_apply();
 }
 
@@ -266,6 +270,9 @@ void FixMembrane3d::place_and_apply()
   output[DETECTIONS] = detections;
   output[AXIAL_FORCE] = net.z();
   output[LATERAL_FORCE] = net.head<2>().norm();
+  const double outer = membrane3d::outer_volume(membrane, members.spheres);
+  output[OUTER_VOLUME] = outer;
+  output[OUTER_RADIUS] = membrane3d::equivalent_radius(outer, platens.hi - platens.lo);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -35,7 +35,7 @@ class FixMembrane3d : public Fix {
   // the global vector (doc/fix_membrane3d.md, Output)
   enum Output {
     VOLUME, EQUIVALENT_RADIUS, MEMBRANE_SPHERES, ESCAPED_SPHERES, FACETS, DETECTIONS,
-    AXIAL_FORCE, LATERAL_FORCE, OUTPUT_SIZE
+    AXIAL_FORCE, LATERAL_FORCE, OUTER_VOLUME, OUTER_RADIUS, OUTPUT_SIZE
   };
 
   FixMembrane3d(class LAMMPS *, int, char **);

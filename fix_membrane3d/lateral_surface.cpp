@@ -47,7 +47,7 @@ Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &pl
 }
 
 // A corner of a clipped facet: its position, its weights over the facet's three
-// vertices, and a key shared by every facet that has the same corner (-1: none).
+// vertices, and for a cut on an edge a key shared by the facets on it (-1: none).
 struct ClipPoint {
   Eigen::Vector3d x;
   std::array<double, 3> w;
@@ -55,25 +55,33 @@ struct ClipPoint {
   int vertex;  // the facet vertex it is, -1 for a cut point
 };
 
+// At most five corners: a triangle clipped by two planes.
+struct Polygon {
+  std::array<ClipPoint, 5> corner;
+  int n = 0;
+  void add(const ClipPoint &q) { corner.at(n++) = q; }
+};
+
 // Facets given by their vertices' ids (shared between facets), positions and spheres.
 class PlatenClip {
 public:
-  PlatenClip(std::int64_t n_ids, const Platens &p) : n_ids_(n_ids), platens_(p) {}
+  PlatenClip(std::int64_t n_ids, const Platens &p)
+      : n_ids_(n_ids), platens_(p), vertex_corner_(static_cast<std::size_t>(n_ids), -1) {}
 
   void add_facet(const std::array<int, 3> &f, const std::array<Eigen::Vector3d, 3> &x,
                  const std::array<int, 3> &sphere) {
-    std::vector<ClipPoint> poly;
+    Polygon poly;
     for (int j = 0; j < 3; ++j) {
       std::array<double, 3> w{0, 0, 0};
       w[j] = 1;
-      poly.push_back({x[j], w, f[j], j});
+      poly.add({x[j], w, -1, j});
     }
     poly = clip(poly, f, platens_.lo, +1, 1);
     poly = clip(poly, f, platens_.hi, -1, 2);
-    if (poly.size() < 3) return;
-    std::vector<int> corner;
-    for (const ClipPoint &q : poly) corner.push_back(corner_index(q, f, sphere));
-    for (std::size_t k = 1; k + 1 < corner.size(); ++k)
+    if (poly.n < 3) return;
+    std::array<int, 5> corner;
+    for (int k = 0; k < poly.n; ++k) corner[k] = corner_index(poly.corner[k], f, sphere);
+    for (int k = 1; k + 1 < poly.n; ++k)
       out_.surface.facets.push_back({corner[0], corner[k], corner[k + 1]});
   }
 
@@ -83,7 +91,8 @@ private:
   std::int64_t n_ids_;
   Platens platens_;
   LateralSurface out_;
-  std::unordered_map<std::int64_t, int> by_key_;
+  std::vector<int> vertex_corner_;                   // by vertex id, -1: none yet
+  std::unordered_map<std::int64_t, int> cut_corner_;  // by edge_key
 
   std::int64_t edge_key(int u, int v, int plane) const {
     return (static_cast<std::int64_t>(std::min(u, v)) * n_ids_ + std::max(u, v)) * 3 + plane;
@@ -92,13 +101,13 @@ private:
   // Sutherland-Hodgman against the half-space side * (z - level) >= 0. A cut on an edge
   // between two facet vertices is computed from its lower-numbered sphere, so that the
   // two facets on that edge get the same bits.
-  std::vector<ClipPoint> clip(const std::vector<ClipPoint> &in, const std::array<int, 3> &f,
-                              double level, int side, int plane) const {
-    std::vector<ClipPoint> out;
-    for (std::size_t k = 0; k < in.size(); ++k) {
-      const ClipPoint &p = in[k], &q = in[(k + 1) % in.size()];
+  Polygon clip(const Polygon &in, const std::array<int, 3> &f, double level, int side,
+               int plane) const {
+    Polygon out;
+    for (int k = 0; k < in.n; ++k) {
+      const ClipPoint &p = in.corner[k], &q = in.corner[(k + 1) % in.n];
       const bool p_in = side * (p.x.z() - level) >= 0, q_in = side * (q.x.z() - level) >= 0;
-      if (p_in) out.push_back(p);
+      if (p_in) out.add(p);
       if (p_in == q_in) continue;
       const bool both_vertices = p.vertex >= 0 && q.vertex >= 0;
       const bool swap = both_vertices && f[q.vertex] < f[p.vertex];
@@ -108,18 +117,20 @@ private:
       cut.x.z() = level;
       for (int j = 0; j < 3; ++j) cut.w[j] = (1 - t) * a.w[j] + t * b.w[j];
       if (both_vertices) cut.key = edge_key(f[p.vertex], f[q.vertex], plane);
-      out.push_back(cut);
+      out.add(cut);
     }
     return out;
   }
 
   int corner_index(const ClipPoint &q, const std::array<int, 3> &f,
                    const std::array<int, 3> &sphere) {
-    const std::int64_t key = q.vertex >= 0 ? edge_key(f[q.vertex], f[q.vertex], 0) : q.key;
-    if (key >= 0) {
-      const auto found = by_key_.find(key);
-      if (found != by_key_.end()) return found->second;
+    int *known = nullptr;
+    if (q.vertex >= 0) {
+      known = &vertex_corner_[f[q.vertex]];
+    } else if (q.key >= 0) {
+      known = &cut_corner_.emplace(q.key, -1).first->second;
     }
+    if (known && *known >= 0) return *known;
     Corner c{{-1, -1, -1}, {0, 0, 0}};
     for (int j = 0; j < 3; ++j) {
       if (q.w[j] == 0) continue;
@@ -134,7 +145,7 @@ private:
     out_.surface.points.push_back(q.x);
     out_.reaches_lo = out_.reaches_lo || q.x.z() == platens_.lo;
     out_.reaches_hi = out_.reaches_hi || q.x.z() == platens_.hi;
-    if (key >= 0) by_key_.emplace(key, index);
+    if (known) *known = index;
     return index;
   }
 };
@@ -241,6 +252,21 @@ std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
       if (c.sphere[j] >= 0) load.at(c.sphere[j]) += c.weight[j] * at_corner[k];
   }
   return load;
+}
+
+double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres) {
+  const Surface &s = membrane.surface;
+  double offset = 0;
+  for (const auto &f : s.facets) {
+    double r = 0;
+    for (int v : f) {
+      const Corner &c = membrane.corners[v];
+      for (int j = 0; j < 3; ++j)
+        if (c.sphere[j] >= 0) r += c.weight[j] * spheres.at(c.sphere[j]).r / 3;
+    }
+    offset += facet_vector_area(s.points[f[0]], s.points[f[1]], s.points[f[2]]).norm() * r;
+  }
+  return lateral_volume(s) + offset;
 }
 
 Eigen::Vector2d membrane_axis(const LateralSurface &membrane) {

@@ -89,6 +89,12 @@ LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens
 std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
                                             std::size_t n_spheres, double p);
 
+// The volume to the membrane spheres' outer faces, to first order in their radii: the
+// volume through the centres plus the membrane's area times the area-weighted mean
+// radius of its spheres (the parallel surface at that distance; it leaves out the
+// curvature terms, e.g. pi r^2 H for a circular cylinder: (r / R)^2 of the volume).
+double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres);
+
 // The sample's axis: the area-weighted centroid (x, y) of the membrane's facets.
 Eigen::Vector2d membrane_axis(const LateralSurface &membrane);
 

@@ -58,7 +58,8 @@ void gather_tags(LAMMPS *lmp, const std::vector<int> &tags, GatheredSpheres &out
   std::vector<double> send;
   for (int tag : tags) {
     const int i = tag <= atom->map_tag_max ? atom->map(tag) : -1;
-    if (i >= 0 && i < atom->nlocal) pack(atom, i, send);
+    // owned here, and the map not stale (the slot holds that atom)
+    if (i >= 0 && i < atom->nlocal && atom->tag[i] == tag) pack(atom, i, send);
   }
   share(lmp, send, out);
 }

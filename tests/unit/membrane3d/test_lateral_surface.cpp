@@ -321,3 +321,14 @@ TEST(LateralSurface, CapsAndWindingNumberAgreeWithTheFlood) {
     }
   }
 }
+
+// To the outer faces: the 4 x 3 x 5 block's 30 through the centres plus its lateral
+// area 2 (3 + 2) x 5 = 50 times the radius (1/2, and 0.6 for the same centres).
+TEST(LateralSurface, OuterVolumeAddsAreaTimesRadius) {
+  const auto s = simple_cubic(4, 3, 5);
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+  EXPECT_NEAR(membrane3d::outer_volume(m, s), 30 + 50 * radius, 1e-12);
+  auto heavy = s;
+  for (Sphere &x : heavy) x.r = 0.6;  // overlapping: the same membrane, a thicker skin
+  EXPECT_NEAR(membrane3d::outer_volume(m, heavy), 30 + 50 * 0.6, 1e-12);
+}

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Step time of the triaxial sample (examples/triaxial, 7 699 spheres in a 50 mm
+# cylinder) with the rigid cylinder and with fix membrane3d every 1, 10, 50 and 200,
+# platens still, on 1 and 2 ranks. Prints the times and the ratios to the cylinder,
+# measured in one run, and the cost of one detection (from every 1 and every 200).
+#   bench/membrane3d_cost.sh [RESTART] [NSTEPS]
+# RESTART: the compressed sample of examples/triaxial/in.triaxial
+# (${out}.compressed.restart, with ${out}.compressed.platen beside it).
+set -euo pipefail
+cd "$(dirname "$0")"
+restart=$(readlink -f "${1:-../out/triaxial/triaxial.compressed.restart}")
+nsteps=${2:-1000}
+exe=$(readlink -f ../build/app/liggghts-membrane)
+[ -f "$restart" ] || { echo "no compressed sample $restart: run examples/triaxial/in.triaxial first"; exit 1; }
+platen=${restart%.restart}.platen
+csv=membrane3d_cost.csv
+ms_per_step() {  # NP LATERAL EVERY NSTEPS
+  mpirun --allow-run-as-root --oversubscribe -np "$1" "$exe" -in in.membrane3d_cost -log none \
+    -var restart "$restart" -var platen "$platen" -var meshdir "$(readlink -f ../examples/triaxial/meshes)" \
+    -var lateral "$2" -var every "$3" -var nsteps "$4" | grep "^Loop time" | tail -1 |
+    awk '{printf "%.4f", 1000 * $4 / $9}'
+}
+echo "ranks,lateral,every,ms_per_step" > $csv
+for np in 1 2; do
+  echo "$np,cylinder,0,$(ms_per_step $np 0 1 "$nsteps")" >> $csv
+  for every in 200 50 10; do echo "$np,membrane,$every,$(ms_per_step $np 1 $every "$nsteps")" >> $csv; done
+  echo "$np,membrane,1,$(ms_per_step $np 1 1 $((nsteps / 10)))" >> $csv
+done
+/usr/bin/python3 - "$csv" <<'PY'
+import collections, csv, sys
+rows = collections.defaultdict(dict)
+for r in csv.DictReader(open(sys.argv[1])):
+    rows[r["ranks"]][(r["lateral"], int(r["every"]))] = float(r["ms_per_step"])
+for np_, t in sorted(rows.items()):
+    base = t[("cylinder", 0)]
+    print("ranks %s:" % np_)
+    print("  %-22s %8.3f ms/step" % ("rigid cylinder", base))
+    for every in (200, 50, 10, 1):
+        ms = t[("membrane", every)]
+        print("  %-22s %8.3f ms/step  %+7.1f %% vs cylinder" % ("membrane every %d" % every, ms,
+                                                              100 * (ms / base - 1)))
+    # every 1 detects each step, every 200 almost never: the difference is a detection
+    print("  one detection          %8.1f ms" % (t[("membrane", 1)] - t[("membrane", 200)]))
+PY
