@@ -14,6 +14,7 @@
 
 #include "membrane_gather.h"
 #include "membrane_state.h"
+#include "vtk_series.h"
 
 class StyleArgs;
 
@@ -42,8 +43,7 @@ class MembraneFrames : protected LAMMPS_NS::Pointers {
   LAMMPS_NS::bigint polyline_every_ = 0, vtk_every_ = 0;
   std::FILE *polyline_ = nullptr;
   std::string polyline_file_;
-  std::string vtk_base_;                                 // FILE without .pvd
-  std::vector<std::pair<long long, std::string>> vtk_frames_; // of this fix, in order
+  vtk_series::Series vtk_;
 };
 
 #endif

@@ -2,7 +2,7 @@
 #define LIGGGHTS_MEMBRANE_MEMBRANE_VTK_H
 
 // The membrane as VTK files for ParaView (fix membrane2d keyword vtk): one
-// XML PolyData file per frame and a .pvd collection of the frames. No LIGGGHTS.
+// XML PolyData file per frame (the .pvd collection: common/vtk_series.h). No LIGGGHTS.
 
 #include <Eigen/Core>
 
@@ -28,11 +28,6 @@ struct VtkSide {
 // per disk. Point data: side, tag (-1 on polyline vertices), radius (0 there),
 // force (0 there; z = 0).
 std::string vtk_frame(const std::vector<VtkSide> &sides);
-
-// The .pvd collection: (time step, file name relative to the .pvd) per frame.
-std::string pvd_collection(const std::vector<std::pair<long long, std::string>> &frames);
-// The frames of a collection written by pvd_collection, in order.
-std::vector<std::pair<long long, std::string>> pvd_frames(const std::string &pvd);
 
 } // namespace membrane
 

@@ -222,6 +222,25 @@ void FixMembrane3d::detect()
   }
   last_detection = update->ntimestep;
   detections += 1.0;
+  check_ranks_agree();
+}
+
+// Every rank computes the membrane from the same gathered spheres, so they must agree;
+// a disagreement (a bug) stops the run instead of letting the ranks part ways.
+void FixMembrane3d::check_ranks_agree()
+{
+  double mine[3] = {static_cast<double>(member_tags.size()),
+                    static_cast<double>(topology.facets.size()), 0.0};
+  for (int tag : member_tags) mine[2] += tag;
+  double lo[3], hi[3];
+  MPI_Allreduce(mine, lo, 3, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(mine, hi, 3, MPI_DOUBLE, MPI_MAX, world);
+  if (lo[0] != hi[0] || lo[1] != hi[1] || lo[2] != hi[2])
+    error->all(FLERR, (std::string(PREFIX) + "the ranks found different membranes at step " +
+                       std::to_string(update->ntimestep) + " (members " + number_text(lo[0]) +
+                       " to " + number_text(hi[0]) + ", facets " + number_text(lo[1]) + " to " +
+                       number_text(hi[1]) + "); please report this with the input script")
+                          .c_str());
 }
 
 void FixMembrane3d::place_and_apply()

@@ -74,6 +74,7 @@ class FixMembrane3d : public Fix {
   void evaluate_inputs();
   void check_between_platens(const GatheredSpheres &g);
   void detect();
+  void check_ranks_agree();
   void place_and_apply();
   [[noreturn]] void fail(const char *what, const char *advice);
 };

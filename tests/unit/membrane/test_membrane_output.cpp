@@ -97,9 +97,10 @@ TEST(MembraneOutput, TrafficPerStepAndPerDetection)
             "(one rank per side)");
 }
 
-// ---- the VTK frame and collection (membrane_vtk.h) --------------------------
+// ---- the VTK frame (membrane_vtk.h) and collection (vtk_series.h) ----------------------
 
 #include "membrane_vtk.h"
+#include "vtk_series.h"
 
 TEST(MembraneVtk, AFrameHoldsThePolylineThenTheDisksOfEachSide)
 {
@@ -123,16 +124,16 @@ TEST(MembraneVtk, AFrameHoldsThePolylineThenTheDisksOfEachSide)
 
 TEST(MembraneVtk, TheCollectionListsTheFramesInOrder)
 {
-  const std::string pvd = membrane::pvd_collection({{0, "m_0.vtp"}, {50, "m_50.vtp"}});
+  const std::string pvd = vtk_series::pvd_collection({{0, "m_0.vtp"}, {50, "m_50.vtp"}});
   const std::size_t first = pvd.find("<DataSet timestep=\"0\" part=\"0\" file=\"m_0.vtp\"/>");
   const std::size_t second = pvd.find("<DataSet timestep=\"50\" part=\"0\" file=\"m_50.vtp\"/>");
   ASSERT_NE(first, std::string::npos);
   ASSERT_NE(second, std::string::npos);
   EXPECT_LT(first, second);
-  EXPECT_NE(membrane::pvd_collection({}).find("<Collection>\n  </Collection>"), std::string::npos);
+  EXPECT_NE(vtk_series::pvd_collection({}).find("<Collection>\n  </Collection>"), std::string::npos);
   // read back
   const std::vector<std::pair<long long, std::string>> frames = {{0, "m_0.vtp"}, {1234567890123, "m_1234567890123.vtp"}};
-  EXPECT_EQ(membrane::pvd_frames(membrane::pvd_collection(frames)), frames);
-  EXPECT_TRUE(membrane::pvd_frames("").empty());
-  EXPECT_TRUE(membrane::pvd_frames("<DataSet timestep=\"3\" file=\"cut").empty());
+  EXPECT_EQ(vtk_series::pvd_frames(vtk_series::pvd_collection(frames)), frames);
+  EXPECT_TRUE(vtk_series::pvd_frames("").empty());
+  EXPECT_TRUE(vtk_series::pvd_frames("<DataSet timestep=\"3\" file=\"cut").empty());
 }
