@@ -24,6 +24,7 @@
 #include "update.h"
 
 #include "membrane3d_record.h"
+#include "membrane3d_vtk.h"
 #include "style_args.h"
 
 using namespace LAMMPS_NS;
@@ -38,12 +39,14 @@ const char *const PREFIX = "Fix membrane3d: "; // every message starts so (doc/m
 // a poured polydisperse cylinder, with a margin (doc/fix_membrane3d.md).
 const double DEFAULT_TOLERANCE = 0.7;
 
-const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every";
+const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every, vtk";
 const char *const USE_PRESSURE =
     "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
 const char *const USE_ZLO = "zlo Z: the lower platen surface (length), a number or v_name";
 const char *const USE_ZHI = "zhi Z: the upper platen surface (length), a number or v_name";
 const char *const USE_EVERY = "every N: find the membrane again every N >= 1 steps";
+const char *const USE_VTK = "vtk N FILE: write the membrane every N >= 1 steps to FILE_<step>.vtp, "
+                            "collected in FILE.pvd";
 const std::string USE_TOLERANCE =
     "tolerance T: the largest gap (length) at which two spheres are linked, default " +
     number_text(DEFAULT_TOLERANCE) + " x the mean diameter";
@@ -78,6 +81,8 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg) : Fix(lammps,
       tolerance_given = args.non_negative(USE_TOLERANCE);
     } else if (key == "every") {
       every = static_cast<int>(args.integer(1, 1000000000L, USE_EVERY));
+    } else if (key == "vtk") {
+      read_vtk(args);
     } else {
       args.unknown(KEYWORDS);
     }
@@ -92,6 +97,36 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg) : Fix(lammps,
   extvector = 0;
   restart_global = 1;
   std::fill(output, output + OUTPUT_SIZE, 0.0);
+}
+
+void FixMembrane3d::read_vtk(StyleArgs &args)
+{
+  vtk_every = args.integer(1, 1000000000L, USE_VTK);
+  const std::string file = args.value(USE_VTK);
+  if (file.empty()) args.bad("the file name is empty", USE_VTK);
+  for (const char *k : {"pressure", "zlo", "zhi", "tolerance", "every", "vtk"})
+    if (file == k) args.bad("the file name is the keyword '" + file + "'", USE_VTK);
+  vtk.name(file);
+  char reason[256] = "";
+  if (comm->me == 0) std::snprintf(reason, sizeof(reason), "%s", vtk.start(update->ntimestep).c_str());
+  MPI_Bcast(reason, sizeof(reason), MPI_CHAR, 0, world);
+  if (reason[0])
+    error->all(FLERR, keyword_message(PREFIX, "vtk", vtk.pvd(),
+                                      std::string("cannot open the file for writing (") + reason +
+                                          "); check that its folder exists and is writable")
+                          .c_str());
+}
+
+// rank 0 holds the whole membrane
+void FixMembrane3d::write_frame(const membrane3d::LateralSurface &membrane)
+{
+  if (vtk_every == 0 || update->ntimestep % vtk_every != 0 || comm->me != 0) return;
+  const std::string why =
+      vtk.add(update->ntimestep, membrane3d::vtk_frame(membrane, members.spheres, pressure));
+  if (!why.empty())
+    error->one(FLERR, keyword_message(PREFIX, "vtk", vtk.frame_path(update->ntimestep),
+                                      "cannot write the frame (" + why + ")")
+                          .c_str());
 }
 
 int FixMembrane3d::setmask()
@@ -135,8 +170,14 @@ void FixMembrane3d::check_other_membranes()
     for (int i = 0; i < atom->nlocal; i++)
       if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) shared += 1.0;
     MPI_Allreduce(MPI_IN_PLACE, &shared, 1, MPI_DOUBLE, MPI_SUM, world);
-    if (shared == 0.0) continue;
     const bool first = f < modify->find_fix(id);
+    const std::string mine = vtk.pvd();
+    if (!mine.empty() && mine == static_cast<FixMembrane3d *>(other)->vtk.pvd())
+      error->all(FLERR, (std::string(PREFIX) + "fixes '" + (first ? other->id : id) + "' and '" +
+                         (first ? id : other->id) + "' both write vtk frames to '" + mine +
+                         "': give each fix its own file")
+                            .c_str());
+    if (shared == 0.0) continue;
     error->all(FLERR, (std::string(PREFIX) + "fixes '" + (first ? other->id : id) + "' and '" +
                        (first ? id : other->id) + "' are both membrane3d on " +
                        number_text(shared) +
@@ -292,6 +333,7 @@ void FixMembrane3d::place_and_apply()
   const double outer = membrane3d::outer_volume(membrane, members.spheres);
   output[OUTER_VOLUME] = outer;
   output[OUTER_RADIUS] = membrane3d::equivalent_radius(outer, platens.hi - platens.lo);
+  write_frame(membrane);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -27,6 +27,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include "lateral_surface.h"
 #include "membrane3d_gather.h"
 #include "scalar_input.h"
+#include "vtk_series.h"
 
 namespace LAMMPS_NS {
 
@@ -56,6 +57,8 @@ class FixMembrane3d : public Fix {
   double tolerance_given = -1.0;           // -1: the default, from the mean diameter
   int every = 1;
   double tolerance = 0.0;
+  bigint vtk_every = 0;  // keyword vtk: frames every this many steps, 0: none
+  vtk_series::Series vtk;
 
   // the last detection: its topology over the member atoms, their IDs, its step
   membrane3d::MembraneTopology topology;
@@ -71,6 +74,8 @@ class FixMembrane3d : public Fix {
   double output[OUTPUT_SIZE];
 
   void check_other_membranes();
+  void read_vtk(class StyleArgs &args);
+  void write_frame(const membrane3d::LateralSurface &membrane);
   void evaluate_inputs();
   void check_between_platens(const GatheredSpheres &g);
   void detect();

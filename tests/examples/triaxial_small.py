@@ -22,6 +22,40 @@ EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
 P = 1e5
 
 
+def vtk_frames(pvd):
+    """(step, points, polys, verts, load sum) of each frame of the membrane's collection,
+    read with VTK's own readers."""
+    import vtk  # Debian's python3-vtk9
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    folder = os.path.dirname(pvd)
+    with open(pvd) as f:
+        entries = re.findall(r'timestep="(\d+)" part="0" file="([^"]+)"', f.read())
+    frames = []
+    for step, name in entries:
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(os.path.join(folder, name))
+        reader.Update()
+        poly = reader.GetOutput()
+        points = vtk_to_numpy(poly.GetPoints().GetData())
+        load = vtk_to_numpy(poly.GetPointData().GetArray("load"))
+        frames.append((int(step), points, poly.GetNumberOfPolys(), poly.GetNumberOfVerts(),
+                       load.sum(axis=0)))
+    return frames
+
+
+def check_frames(check, frames, height):
+    """The membrane's frames: one at least per stage, facets in each, every corner
+    between the platens (z in [0, H0]), and the lateral loads summing to zero."""
+    check(len(frames) >= 3, "%d membrane frames" % len(frames))
+    for step, points, polys, verts, load in frames:
+        check(polys > 100 and verts == 0, "frame %d: %d facets, %d escapees" % (step, polys, verts))
+        check(points[:, 2].min() >= 0 and points[:, 2].max() <= height * 1.0001,
+              "frame %d: corners from z = %.4g to %.4g" % (step, points[:, 2].min(), points[:, 2].max()))
+        check(abs(load[0]) + abs(load[1]) < 1e-9 * abs(load).sum() + 1e-12,
+              "frame %d: lateral load sum %.2g, %.2g N" % (step, load[0], load[1]))
+
+
 def main():
     exe, np_ = sys.argv[1], sys.argv[2]
     check = Checks()
@@ -30,13 +64,15 @@ def main():
         log = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe,
                    "-in", "in.triaxial", "-var", "R", "0.01", "-var", "hfill", "0.06",
                    "-var", "nsettle", "8000", "-var", "ncompress", "10000",
-                   "-var", "nhold", "4000", "-var", "out", out], out + ".log", cwd=EXAMPLE)
+                   "-var", "nhold", "4000", "-var", "vtkevery", "4000", "-var", "out", out],
+                  out + ".log", cwd=EXAMPLE)
         compressed = float(re.search(r"TRIAXIAL compressed: sigma1 = (\S+) Pa", log).group(1))
         iso = re.search(r"TRIAXIAL isotropic: sigma1 = (\S+) Pa, V_out = (\S+) m3, R_out = (\S+) m, "
                         r"membrane spheres (\S+), escaped (\S+)", log)
         atoms = int(re.search(r"^ +1 +(\d+) ", log, re.M).group(1))
         e1_end = float(re.search(r"TRIAXIAL done: e1 = (\S+),", log).group(1))
         t = table(out + ".txt")
+        frames = vtk_frames(out + "_membrane.pvd")
     check(abs(compressed / P - 1) < 0.05, "compressed in the cylinder: sigma1 = %.0f Pa" % compressed)
     sigma1, spheres, escaped = float(iso.group(1)), float(iso.group(4)), float(iso.group(5))
     check(abs(sigma1 / P - 1) < 0.10, "isotropic with the membrane: sigma1 = %.0f Pa" % sigma1)
@@ -54,6 +90,8 @@ def main():
     steps = t["step"][-1] - t["step"][0]
     dets = t["detections"][-1] - t["detections"][0]
     check(abs(dets - steps / 50) <= 1, "%d detections in %d steps (every 50)" % (dets, steps))
+    check_frames(check, frames, float(re.search(r"TRIAXIAL compressed: sigma1 = \S+ Pa at H = (\S+) m",
+                                                log).group(1)))
     if check.failures:
         sys.exit("FAIL: %d checks" % len(check.failures))
 

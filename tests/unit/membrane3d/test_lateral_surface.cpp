@@ -4,12 +4,14 @@
 #include "lateral_surface.h"
 #include "packings.h"
 #include "shapes.h"
+#include "membrane3d_vtk.h"
 #include "surface_closure.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 
 using namespace packings;
@@ -331,4 +333,34 @@ TEST(LateralSurface, OuterVolumeAddsAreaTimesRadius) {
   auto heavy = s;
   for (Sphere &x : heavy) x.r = 0.6;  // overlapping: the same membrane, a thicker skin
   EXPECT_NEAR(membrane3d::outer_volume(m, heavy), 30 + 50 * 0.6, 1e-12);
+}
+
+// The VTK frame of the block with an escaped bump: the membrane's corners then the
+// escapee as points, its facets as polys, the escapee as a vertex; the loads in the
+// file sum to -p x the vector area (zero) plus the escapee's push p pi r^2.
+TEST(LateralSurface, VtkFrameHoldsTheMembraneAndTheEscapee) {
+  const auto s = block_with_bump(radius + 0.1);
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
+  const std::string frame = membrane3d::vtk_frame(m, s, p);
+  const std::size_t n = m.surface.points.size();
+  EXPECT_NE(frame.find("NumberOfPoints=\"" + std::to_string(n + 1) + "\" NumberOfVerts=\"1\""),
+            std::string::npos);
+  EXPECT_NE(frame.find("NumberOfPolys=\"" + std::to_string(m.surface.facets.size()) + "\""),
+            std::string::npos);
+  // the Verts connectivity is the escapee's point, after the corners
+  const std::size_t verts = frame.find("<Verts>");
+  ASSERT_NE(verts, std::string::npos);
+  EXPECT_NE(frame.find(" " + std::to_string(n) + "\n", verts), std::string::npos);
+  // the load array: 3 numbers per point; their sum
+  const std::size_t load = frame.find("Name=\"load\"");
+  ASSERT_NE(load, std::string::npos);
+  std::istringstream numbers(frame.substr(frame.find('>', load) + 1));
+  Vector3d sum = Vector3d::Zero();
+  for (std::size_t k = 0; k < 3 * (n + 1); ++k) {
+    double v;
+    ASSERT_TRUE(numbers >> v) << k;
+    sum[k % 3] += v;
+  }
+  const double push = p * M_PI * radius * radius;
+  EXPECT_NEAR(sum.norm(), push, 1e-12);
 }
