@@ -18,6 +18,18 @@
 
 namespace vtk_series {
 
+// The start of a one-piece PolyData file, up to its PointData.
+inline std::string polydata_start(std::size_t points, std::size_t verts, std::size_t lines,
+                                  std::size_t polys)
+{
+  return "<?xml version=\"1.0\"?>\n"
+         "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+         "  <PolyData>\n    <Piece NumberOfPoints=\"" +
+         std::to_string(points) + "\" NumberOfVerts=\"" + std::to_string(verts) +
+         "\" NumberOfLines=\"" + std::to_string(lines) + "\" NumberOfStrips=\"0\" NumberOfPolys=\"" +
+         std::to_string(polys) + "\">\n      <PointData>\n";
+}
+
 // One ascii DataArray of n tuples; `value(k)` gives tuple k (its first `ncomp`
 // components), every digit written so that ParaView shows the run's values.
 template <class Value>

@@ -33,14 +33,7 @@ std::string vtk_frame(const std::vector<VtkSide> &sides)
     }
   }
   const std::size_t n = points.size();
-  std::string out = "<?xml version=\"1.0\"?>\n"
-                    "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                    "  <PolyData>\n"
-                    "    <Piece NumberOfPoints=\"" +
-                    std::to_string(n) + "\" NumberOfVerts=\"" + std::to_string(verts.size()) +
-                    "\" NumberOfLines=\"" + std::to_string(lines.size()) +
-                    "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-                    "      <PointData>\n";
+  std::string out = vtk_series::polydata_start(n, verts.size(), lines.size(), 0);
   data_array(out, "Int32", "side", 1, n, [&](std::size_t k) {
     return std::array<double, 3>{static_cast<double>(points[k].side)};
   });

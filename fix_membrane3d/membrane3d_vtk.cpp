@@ -27,13 +27,7 @@ std::string vtk_frame(const LateralSurface &membrane, const std::vector<Sphere> 
   for (const auto &f : membrane.surface.facets) polys.push_back({f[0], f[1], f[2]});
 
   const std::size_t n = points.size();
-  std::string out = "<?xml version=\"1.0\"?>\n"
-                    "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                    "  <PolyData>\n"
-                    "    <Piece NumberOfPoints=\"" +
-                    std::to_string(n) + "\" NumberOfVerts=\"" + std::to_string(verts.size()) +
-                    "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"" +
-                    std::to_string(polys.size()) + "\">\n      <PointData>\n";
+  std::string out = vtk_series::polydata_start(n, verts.size(), 0, polys.size());
   using vtk_series::data_array;
   auto vec = [](const Eigen::Vector3d &v) { return std::array<double, 3>{v.x(), v.y(), v.z()}; };
   data_array(out, "Int32", "escaped", 1, n,
