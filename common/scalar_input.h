@@ -76,7 +76,13 @@ class ScalarInput {
   double evaluate_checked(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name,
                           bool non_negative) const
   {
-    const double v = evaluate(lmp);
+    return checked(lmp, prefix, name, non_negative, evaluate(lmp));
+  }
+
+  // `v` (this input's value, evaluated elsewhere), checked as evaluate_checked does
+  double checked(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix, const char *name,
+                 bool non_negative, double v) const
+  {
     if (!std::isfinite(v) || (non_negative && !(v >= 0.0)))
       lmp->error->all(FLERR,
                       keyword_message(prefix, name, text(),

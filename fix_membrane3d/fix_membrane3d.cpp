@@ -23,6 +23,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include "membrane3d_checks.h"
 #include "membrane3d_record.h"
 #include "membrane3d_vtk.h"
 #include "style_args.h"
@@ -156,42 +157,18 @@ void FixMembrane3d::init()
     }
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   if (sums[1] == 0.0) fail("the fix group has no atoms", "give it the sample's spheres");
-  check_other_membranes();
+  check_other_membranes(lmp, PREFIX, this);
   tolerance = tolerance_given >= 0.0 ? tolerance_given : DEFAULT_TOLERANCE * sums[0] / sums[1];
-}
-
-// Two membranes on one sphere would press it twice.
-void FixMembrane3d::check_other_membranes()
-{
-  for (int f = 0; f < modify->nfix; f++) {
-    Fix *other = modify->fix[f];
-    if (other == this || strcmp(other->style, style) != 0) continue;
-    double shared = 0.0;
-    for (int i = 0; i < atom->nlocal; i++)
-      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) shared += 1.0;
-    MPI_Allreduce(MPI_IN_PLACE, &shared, 1, MPI_DOUBLE, MPI_SUM, world);
-    const bool first = f < modify->find_fix(id);
-    const std::string mine = vtk.pvd();
-    if (!mine.empty() && mine == static_cast<FixMembrane3d *>(other)->vtk.pvd())
-      error->all(FLERR, (std::string(PREFIX) + "fixes '" + (first ? other->id : id) + "' and '" +
-                         (first ? id : other->id) + "' both write vtk frames to '" + mine +
-                         "': give each fix its own file")
-                            .c_str());
-    if (shared == 0.0) continue;
-    error->all(FLERR, (std::string(PREFIX) + "fixes '" + (first ? other->id : id) + "' and '" +
-                       (first ? id : other->id) + "' are both membrane3d on " +
-                       number_text(shared) +
-                       " spheres: one membrane per sample (unfix one; two samples need groups "
-                       "with no sphere in common)")
-                          .c_str());
-  }
 }
 
 void FixMembrane3d::evaluate_inputs()
 {
-  pressure = pressure_in.evaluate_checked(lmp, PREFIX, "pressure", true);
-  platens.lo = zlo_in.evaluate_checked(lmp, PREFIX, "zlo", false);
-  platens.hi = zhi_in.evaluate_checked(lmp, PREFIX, "zhi", false);
+  double v[3] = {pressure_in.evaluate(lmp), zlo_in.evaluate(lmp), zhi_in.evaluate(lmp)};
+  const ScalarInput *inputs[3] = {&pressure_in, &zlo_in, &zhi_in};
+  same_on_every_rank(lmp, PREFIX, inputs, {"pressure", "zlo", "zhi"}, v, warned_spread);
+  pressure = pressure_in.checked(lmp, PREFIX, "pressure", true, v[0]);
+  platens.lo = zlo_in.checked(lmp, PREFIX, "zlo", false, v[1]);
+  platens.hi = zhi_in.checked(lmp, PREFIX, "zhi", false, v[2]);
   if (!(platens.lo < platens.hi))
     error->all(FLERR, keyword_message(PREFIX, "zlo", zlo_in.text(),
                                       "is " + number_text(platens.lo) + ", not below zhi = " +
@@ -263,25 +240,7 @@ void FixMembrane3d::detect()
   }
   last_detection = update->ntimestep;
   detections += 1.0;
-  check_ranks_agree();
-}
-
-// Every rank computes the membrane from the same gathered spheres, so they must agree;
-// a disagreement (a bug) stops the run instead of letting the ranks part ways.
-void FixMembrane3d::check_ranks_agree()
-{
-  double mine[3] = {static_cast<double>(member_tags.size()),
-                    static_cast<double>(topology.facets.size()), 0.0};
-  for (int tag : member_tags) mine[2] += tag;
-  double lo[3], hi[3];
-  MPI_Allreduce(mine, lo, 3, MPI_DOUBLE, MPI_MIN, world);
-  MPI_Allreduce(mine, hi, 3, MPI_DOUBLE, MPI_MAX, world);
-  if (lo[0] != hi[0] || lo[1] != hi[1] || lo[2] != hi[2])
-    error->all(FLERR, (std::string(PREFIX) + "the ranks found different membranes at step " +
-                       std::to_string(update->ntimestep) + " (members " + number_text(lo[0]) +
-                       " to " + number_text(hi[0]) + ", facets " + number_text(lo[1]) + " to " +
-                       number_text(hi[1]) + "); please report this with the input script")
-                          .c_str());
+  check_ranks_agree(lmp, PREFIX, member_tags, topology.facets.size());
 }
 
 void FixMembrane3d::place_and_apply()

@@ -21,6 +21,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #define LIGGGHTS_MEMBRANE_FIX_MEMBRANE3D_H
 
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "fix.h"
@@ -51,6 +52,8 @@ class FixMembrane3d : public Fix {
   void write_restart(FILE *);
   void restart(char *);
   double memory_usage();
+  // FILE.pvd of keyword vtk, "" without it (two fixes may not share it)
+  std::string vtk_file() const { return vtk.pvd(); }
 
  private:
   ScalarInput pressure_in, zlo_in, zhi_in; // numbers or v_name
@@ -71,15 +74,14 @@ class FixMembrane3d : public Fix {
   double pressure = 0.0;
   membrane3d::Platens platens{0.0, 0.0};
   bool warned_rim = false;
+  bool warned_spread = false; // an input differing between the ranks, once per fix
   double output[OUTPUT_SIZE];
 
-  void check_other_membranes();
   void read_vtk(class StyleArgs &args);
   void write_frame(const membrane3d::LateralSurface &membrane);
   void evaluate_inputs();
   void check_between_platens(const GatheredSpheres &g);
   void detect();
-  void check_ranks_agree();
   void place_and_apply();
   [[noreturn]] void fail(const char *what, const char *advice);
 };

@@ -85,6 +85,8 @@ def main():
     q5 = [qq for ee, qq in zip(e1, q) if ee > 0.05]
     check(q5 and max(q5) > 0.3 * P, "q beyond 5 %% strain up to %.0f Pa" % (max(q5) if q5 else 0))
     check(max(abs(v) for v in ev) < 0.10, "|ev| at most %.4f" % max(abs(v) for v in ev))
+    check("found different membranes" not in log, "the ranks found the same membranes")
+    check(log.count("differs between the ranks") <= 1, "a rank-dependent input warned about once at most")
     shear_log = log[log.index("TRIAXIAL isotropic"):]
     check("does not reach" not in shear_log, "the membrane reaches both platens in shear")
     steps = t["step"][-1] - t["step"][0]
