@@ -7,8 +7,9 @@
 # RESTART: the compressed sample of examples/triaxial/in.triaxial
 # (${out}.compressed.restart, with ${out}.compressed.platen beside it).
 set -euo pipefail
-cd "$(dirname "$0")"
-restart=$(readlink -f "${1:-../out/triaxial/triaxial.compressed.restart}")
+here=$(cd "$(dirname "$0")" && pwd)
+restart=$(readlink -f "${1:-$here/../out/triaxial/triaxial.compressed.restart}")  # before cd: a path given from anywhere
+cd "$here"
 nsteps=${2:-1000}
 exe=$(readlink -f ../build/app/liggghts-membrane)
 [ -f "$restart" ] || { echo "no compressed sample $restart: run examples/triaxial/in.triaxial first"; exit 1; }

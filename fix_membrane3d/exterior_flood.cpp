@@ -87,9 +87,12 @@ private:
 
   bool finite(Vertex v) const { return !triangulation_.is_infinite(v); }
 
+  // Across a platen (an edge with a sealed sphere) the tolerance doubles: a sphere and
+  // its image are then linked when the sphere is within T of the platen.
   bool linked(Vertex a, Vertex b) const {
+    const bool across = sealed_[a->info()] || sealed_[b->info()];
     const Sphere &p = spheres_[a->info()], &q = spheres_[b->info()];
-    return (p.x - q.x).norm() - p.r - q.r <= tolerance_;
+    return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance_ : tolerance_);
   }
 
   // The facet of c opposite its vertex k: a wall when its three edges are links.

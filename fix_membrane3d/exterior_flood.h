@@ -17,9 +17,10 @@
 // cells are both flooded and not, so no sphere whose cells are all unflooded (an
 // interior sphere, or one in a closed internal void) ever gets pressure.
 //
-// Sealed spheres (the platen images of lateral_surface.h) are never a way in: a cell all
-// of whose spheres are sealed is not flooded, so the flood reaches the packing only from
-// the sides. Of the unflooded cells only the largest connected group (by cells with an
+// Sealed spheres (the platen images of lateral_surface.h) are never a way in: a cell
+// all of whose spheres are sealed is not flooded, so the flood reaches the packing only
+// from the sides; an edge with a sealed sphere is a link up to a gap of 2 T, so that a
+// sphere within T of a platen is linked to its image, as to the platen itself. Of the unflooded cells only the largest connected group (by cells with an
 // unsealed sphere) is the sample: the spheres of any other group (a linked cluster that
 // has left the sample) are outside.
 #ifndef LIGGGHTS_MEMBRANE_EXTERIOR_FLOOD_H

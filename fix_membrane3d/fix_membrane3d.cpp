@@ -37,7 +37,7 @@ const char *const PREFIX = "Fix membrane3d: "; // every message starts so (doc/m
 
 // The default tolerance as a fraction of the group's mean diameter: the smallest at
 // which the flood found no surface sphere more than two diameters inside the skin of
-// a poured polydisperse cylinder, with a margin (doc/fix_membrane3d.md).
+// the compressed triaxial sample (0.6), with a margin (bench/membrane3d_tolerance.sh).
 const double DEFAULT_TOLERANCE = 0.7;
 
 const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every, vtk";

@@ -8,8 +8,10 @@
 // flood reaches the packing from the sides only. The boundary of the flood is then
 // clipped at the two platen planes: the membrane ends exactly on the platens, its rims
 // lie in their planes, and lateral_volume (surface_loads.h) is the sample's volume
-// between them. A sphere is linked to a platen, in effect, when its gap to it is at
-// most T / 2 (its gap to its own image at most T).
+// between them. A sphere within T of a platen is linked to it (to its image, at a gap
+// of at most 2 T), so the membrane does not run between the platen and such spheres:
+// it is sealed to the platen as a latex sleeve is, and where the end layer stands off
+// the platen by up to T it hangs from the outermost spheres down to the platen.
 //
 // Vertex convention: the membrane runs through the sphere centres (a clipped facet
 // has corners on its edges, in the platen planes). The volume is therefore that of

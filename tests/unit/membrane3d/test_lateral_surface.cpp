@@ -197,16 +197,24 @@ TEST(LateralSurface, CylinderOfRingsHasThePrismVolume) {
                      1e-12);
 }
 
-// A block lifted off the lower platen (gap 0.3 > T / 2): the flood runs under it, the
-// membrane has no rim there and pushes the block up by p x its base.
-TEST(LateralSurface, BlockOffThePlatenHasNoRimThere) {
+// A block lifted off the lower platen by 0.3 (within T = 0.5): the membrane is still
+// sealed to the platen, hanging from the lowest layer down to it, V = 3 x 2 x 5.3 and
+// nothing axial; lifted by 0.6 (beyond T) the flood runs under it: no rim there, and
+// the membrane pushes it up by p x its base.
+TEST(LateralSurface, BlockOffThePlatenKeepsItsRimWithinTheTolerance) {
   const auto s = simple_cubic(4, 3, 5);
   Platens platens = touching_platens(s);
   platens.lo -= 0.3;
-  const auto m = membrane3d::lateral_surface(s, platens, radius);
-  EXPECT_FALSE(m.reaches_lo);
-  EXPECT_TRUE(m.reaches_hi);
-  expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }),
+  const auto near = membrane3d::lateral_surface(s, platens, radius);
+  EXPECT_TRUE(near.reaches_lo && near.reaches_hi);
+  EXPECT_NEAR(membrane3d::lateral_volume(near.surface), 3 * 2 * 5.3, round_off);
+  expect_vector_near(load_on(s, near, [](const Vector3d &) { return true; }), Vector3d::Zero(),
+                     round_off);
+  platens.lo -= 0.3;
+  const auto far = membrane3d::lateral_surface(s, platens, radius);
+  EXPECT_FALSE(far.reaches_lo);
+  EXPECT_TRUE(far.reaches_hi);
+  expect_vector_near(load_on(s, far, [](const Vector3d &) { return true; }),
                      Vector3d(0, 0, p * 3 * 2), round_off);
 }
 
