@@ -15,17 +15,15 @@ exe=$(readlink -f ../build/app/liggghts-membrane)
 [ -f "$restart" ] || { echo "no compressed sample $restart: run examples/triaxial/in.triaxial first"; exit 1; }
 platen=${restart%.restart}.platen
 csv=membrane3d_cost.csv
-ms_per_step() {  # NP LATERAL EVERY NSTEPS
-  mpirun --allow-run-as-root --oversubscribe -np "$1" "$exe" -in in.membrane3d_cost -log none \
-    -var restart "$restart" -var platen "$platen" -var meshdir "$(readlink -f ../examples/triaxial/meshes)" \
-    -var lateral "$2" -var every "$3" -var nsteps "$4" | grep "^Loop time" | tail -1 |
-    awk '{printf "%.4f", 1000 * $4 / $9}'
-}
+meshdir=../examples/triaxial/meshes
+. ./step_time.sh
+# NP LATERAL EVERY NSTEPS
+ms_cost() { ms_per_step "$1" in.membrane3d_cost restart "$restart" platen "$platen" lateral "$2" every "$3" nsteps "$4"; }
 echo "ranks,lateral,every,ms_per_step" > $csv
 for np in 1 2; do
-  echo "$np,cylinder,0,$(ms_per_step $np 0 1 "$nsteps")" >> $csv
-  for every in 200 50 10; do echo "$np,membrane,$every,$(ms_per_step $np 1 $every "$nsteps")" >> $csv; done
-  echo "$np,membrane,1,$(ms_per_step $np 1 1 $((nsteps / 10)))" >> $csv
+  echo "$np,cylinder,0,$(ms_cost $np 0 1 "$nsteps")" >> $csv
+  for every in 200 50 10; do echo "$np,membrane,$every,$(ms_cost $np 1 $every "$nsteps")" >> $csv; done
+  echo "$np,membrane,1,$(ms_cost $np 1 1 $((nsteps / 10)))" >> $csv
 done
 /usr/bin/python3 - "$csv" <<'PY'
 import collections, csv, sys

@@ -289,7 +289,7 @@ void FixMembrane3d::place_and_apply()
   output[DETECTIONS] = detections;
   output[AXIAL_FORCE] = net.z();
   output[LATERAL_FORCE] = net.head<2>().norm();
-  const double outer = membrane3d::outer_volume(membrane, members.spheres);
+  const double outer = volume + membrane3d::skin_volume(membrane, members.spheres);
   output[OUTER_VOLUME] = outer;
   output[OUTER_RADIUS] = membrane3d::equivalent_radius(outer, platens.hi - platens.lo);
   write_frame(membrane);

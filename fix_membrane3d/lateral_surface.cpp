@@ -255,6 +255,10 @@ std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
 }
 
 double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres) {
+  return lateral_volume(membrane.surface) + skin_volume(membrane, spheres);
+}
+
+double skin_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres) {
   const Surface &s = membrane.surface;
   double offset = 0;
   for (const auto &f : s.facets) {
@@ -266,7 +270,7 @@ double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &s
     }
     offset += facet_vector_area(s.points[f[0]], s.points[f[1]], s.points[f[2]]).norm() * r;
   }
-  return lateral_volume(s) + offset;
+  return offset;
 }
 
 Eigen::Vector2d membrane_axis(const LateralSurface &membrane) {

@@ -96,6 +96,8 @@ std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
 // radius of its spheres (the parallel surface at that distance; it leaves out the
 // curvature terms, e.g. pi r^2 H for a circular cylinder: (r / R)^2 of the volume).
 double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres);
+// Its second part alone, S r (for a caller that has lateral_volume already).
+double skin_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres);
 
 // The sample's axis: the area-weighted centroid (x, y) of the membrane's facets.
 Eigen::Vector2d membrane_axis(const LateralSurface &membrane);

@@ -22,11 +22,11 @@ mount --bind /proc "$ROOT/proc"
 mount --bind /sys "$ROOT/sys"      # hwloc (Open MPI) reads the CPU topology there
 mount --bind /dev "$ROOT/dev"
 mount --bind /dev/pts "$ROOT/dev/pts"
-cp "$DEB" "$ROOT/tmp/"
+cp "$DEB" "$ROOT/"
 chroot "$ROOT" sh -eu -c "
   apt-get update -q
-  apt-get install -y -q --no-install-recommends /tmp/$(basename "$DEB")
-  W=/tmp/biaxial && mkdir -p \$W
+  cd / && apt-get install -y -q --no-install-recommends ./$(basename "$DEB")
+  W=\$(mktemp -d)
   cd /usr/share/liggghts-membrane/examples/biaxial
   M='mpirun --allow-run-as-root --oversubscribe -np 2'
   liggghts-membrane-sample --scale 0.15 --seed 7 --out \$W/sample.data
