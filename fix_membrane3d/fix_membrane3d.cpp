@@ -195,7 +195,8 @@ void FixMembrane3d::post_force(int)
     due = members.tags.size() != member_tags.size(); // an atom was lost: find it anew
   }
   // one decision for all ranks: a rank that detected alone would wait forever in the
-  // gather (every rank holds the same state, so this only guards against the unforeseen)
+  // gather (with rank 0's inputs every rank holds the same state: this guards against
+  // the unforeseen)
   int due_any = due ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &due_any, 1, MPI_INT, MPI_MAX, world);
   if (due_any) detect();
@@ -231,13 +232,12 @@ void FixMembrane3d::detect()
                    "tolerance)");
   }
   member_tags.clear();
-  members.tags.clear();
   members.spheres.clear();
   for (int k : index) {
     member_tags.push_back(all.tags[k]);
-    members.tags.push_back(all.tags[k]);
     members.spheres.push_back(all.spheres[k]);
   }
+  members.tags = member_tags;
   last_detection = update->ntimestep;
   detections += 1.0;
   check_ranks_agree(lmp, PREFIX, member_tags, topology.facets.size());
@@ -256,7 +256,7 @@ void FixMembrane3d::place_and_apply()
     const std::string which = !membrane.reaches_lo ? "lower (zlo)" : "upper (zhi)";
     error->warning(FLERR, (std::string(PREFIX) + "the membrane does not reach the " + which +
                            " platen at step " + std::to_string(update->ntimestep) +
-                           ": no sphere is within tolerance/2 of it, so the membrane closes over "
+                           ": no sphere is within the tolerance of it, so the membrane closes over "
                            "that end of the sample and presses on it")
                               .c_str());
   }
