@@ -114,7 +114,10 @@ class StyleArgs {
     std::string list;
     for (const char *w : words) {
       if (v == w) return index;
-      list += std::string(index == 0 ? "" : index + 1 == static_cast<int>(words.size()) ? " or " : ", ") + w;
+      list += std::string(index == 0                                    ? ""
+                          : index + 1 == static_cast<int>(words.size()) ? " or "
+                                                                        : ", ") +
+              w;
       index++;
     }
     bad("must be " + list, usage);
@@ -124,6 +127,12 @@ class StyleArgs {
   [[noreturn]] void bad(const std::string &problem, const std::string &usage) const
   {
     fail_all(keyword_message(prefix_, key_, value_, problem + "; " + usage));
+  }
+
+  // a keyword this style knows but refuses here; `why` says why and what instead
+  [[noreturn]] void refused(const std::string &why) const
+  {
+    fail_all(prefix_ + "keyword '" + key_ + "' " + why);
   }
 
   [[noreturn]] void unknown(const std::string &keywords) const

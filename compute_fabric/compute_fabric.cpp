@@ -20,6 +20,7 @@
 #include "update.h"
 #include "variable.h"
 
+#include "fabric_output3d.h"
 #include "stability_index.h"
 #include "style_args.h"
 
@@ -44,13 +45,9 @@ std::string msg(const std::string &text)
 ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
   : Compute(lammps, iarg, narg, arg), nbins(18), estimator(fabric::Estimator::Unbiased),
     stability_flag(false), rattlers_flag(false), histogram_flag(false), stress_flag(false),
-    walls_flag(false), area_ivar(-1), iregion(-1), contact_source(lammps, this),
-    warned_no_normal(false), nmax_atom(0)
+    walls_flag(false), area_ivar(-1), iregion(-1), three_d(lammps->domain->dimension == 3),
+    contact_source(lammps, this), warned_no_normal(false), nmax_atom(0)
 {
-  if (domain->dimension != 2)
-    error->all(
-        FLERR,
-        msg("requires dimension 2: it is a 2D compute; set dimension 2 before create_box").c_str());
   if (!atom->radius_flag)
     error->all(FLERR, msg("requires per-atom radii; use atom_style granular (or sphere)").c_str());
   if (atom->tag_enable == 0 || atom->map_style == 0)
@@ -69,10 +66,10 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
   parse_args(iarg, narg, arg);
 
   vector_flag = 1;
-  size_vector = VECTOR_SIZE;
+  size_vector = three_d ? static_cast<int>(fabric3d::VECTOR_SIZE) : static_cast<int>(VECTOR_SIZE);
   extvector = 0;
-  memory->create(vector, VECTOR_SIZE, "fabric:vector");
-  std::fill(vector, vector + VECTOR_SIZE, 0.0);
+  memory->create(vector, size_vector, "fabric:vector");
+  std::fill(vector, vector + size_vector, 0.0);
 
   if (histogram_flag) {
     array_flag = 1;
@@ -82,9 +79,9 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
     memory->create(array, nbins, 4, "fabric:array");
   }
 
-  // per-atom: contact count, stability index
+  // per-atom: contact count, stability index (3D: the count only, a vector)
   peratom_flag = 1;
-  size_peratom_cols = 2;
+  size_peratom_cols = three_d ? 0 : 2;
 
   // the contact angles seen at ghosts go to their owners (FabricLocal)
   comm_reverse = FabricLocal::END_SLOTS;
@@ -99,6 +96,12 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
   StyleArgs args(lmp, PREFIX, narg, arg, iarg);
   while (args.more()) {
     const std::string key = args.keyword();
+    if (three_d && (key == "bins" || key == "estimator" || key == "histogram"))
+      args.refused("is 2D only (the polar histogram and its estimators); in 3D compute fabric "
+                   "fits the anisotropy tensors (vector entries 1-3, 11-28); leave it out");
+    if (three_d && (key == "stability" || key == "rattlers"))
+      args.refused("is 2D only (the stability index of contacts around a disk); in 3D use Z_m "
+                   "(vector entry 6) and the per-sphere contact counts (c_ID); leave it out");
     if (key == "bins") {
       const char *usage = "bins N, the number of angular bins over 360 deg, an even integer "
                           "from 6 to 3600 (default 18)";
@@ -125,8 +128,8 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
     } else if (key == "stress") {
       area_in = ScalarInput(); // a repeated stress: v_name then A must forget the name
       area_in.read(args, ScalarInput::Sign::Positive,
-                   "stress A or v_name, the sample area (length^2 per unit thickness) of the "
-                   "Love-Weber stress");
+                   "stress A or v_name, the sample area (2D, length^2 per unit thickness) or "
+                   "volume (3D) of the Love-Weber stress");
       stress_flag = true;
     } else if (key == "region") {
       const char *usage = "region ID, count only the particles whose centre is inside region ID "
@@ -163,6 +166,7 @@ ComputeFabric::~ComputeFabric()
   memory->destroy(vector);
   memory->destroy(array);
   memory->destroy(array_atom);
+  memory->destroy(vector_atom);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -235,7 +239,8 @@ const ComputeFabric::StepSums &ComputeFabric::sums_now(bool with_angles)
     contact_source.reduce(packed);
     current.tensor.unpack(packed.data());
   }
-  if (current.sums.no_normal.value() > 0.0 && !warned_no_normal) warn_no_normal();
+  const long no_normal = static_cast<long>(current.sums.no_normal.value());
+  if (no_normal > 0 && !warned_no_normal) warn_no_normal(no_normal);
   return current;
 }
 
@@ -255,31 +260,11 @@ fabric::ParticleSums ComputeFabric::particle_sums(bool with_lambda)
   return p;
 }
 
-/* ----------------------------------------------------------------------
-   contacts with coincident centres (fabric::make_contact): once per compute,
-   printed by rank 0, naming the pair with the smallest tags over all ranks
-------------------------------------------------------------------------- */
-
-void ComputeFabric::warn_no_normal()
+// contacts with coincident centres: warned once per compute (collective)
+void ComputeFabric::warn_no_normal(long count)
 {
   warned_no_normal = true;
-  long a = 0, b = 0;
-  double distance = 0.0;
-  contact_source.first_missing_normal(a, b, distance); // collective
-  if (comm->me != 0) return;
-  const std::string pair = b >= 0 ? "atoms " + std::to_string(a) + " and " + std::to_string(b)
-                                  : "atom " + std::to_string(a) + " and a mesh wall";
-  const long count = static_cast<long>(current.sums.no_normal.value());
-  const std::string text = msg(
-      std::to_string(count) + " contact(s) with coincident centres (" + pair + ", distance " +
-      number_text(distance) +
-      ") have no normal; left out "
-      "of the fabric and force directions, the stress and the stability index, still counted in "
-      "N_c, C_n and Z_m (c_" +
-      std::string(id) +
-      "[17] is their number); were two atoms created "
-      "at one point? (warned once)");
-  error->warning(FLERR, text.c_str());
+  contact_source.warn_missing_normals(count, "c_" + std::string(id) + (three_d ? "[9]" : "[17]"));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -298,7 +283,8 @@ double ComputeFabric::sample_area()
     error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
                                       "is " + number_text(area) + " at step " +
                                           std::to_string(update->ntimestep) +
-                                          "; it must be a positive number (the sample area)")
+                                          "; it must be a positive number (the sample " +
+                                          (three_d ? "volume)" : "area)"))
                           .c_str());
   return area;
 }
@@ -309,6 +295,12 @@ void ComputeFabric::compute_vector()
 {
   invoked_vector = update->ntimestep;
   const StepSums &step = sums_now(false);
+  if (three_d) {
+    const long no_normal = fabric3d::fill_vector(vector, contact_source, step.particles,
+                                                 stress_flag ? sample_area() : 0.0);
+    if (no_normal > 0 && !warned_no_normal) warn_no_normal(no_normal);
+    return;
+  }
 
   std::fill(vector, vector + VECTOR_SIZE, 0.0);
   const fabric::Anisotropies an = fabric::anisotropies(step.sums, step.tensor, estimator);
@@ -361,20 +353,26 @@ void ComputeFabric::compute_array()
 void ComputeFabric::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
-  sums_now(true);
-  if (!current.have_lambda) particle_sums(true);
+  sums_now(!three_d);
+  if (!three_d && !current.have_lambda) particle_sums(true);
 
   if (atom->nmax > nmax_atom) {
-    memory->destroy(array_atom);
     nmax_atom = atom->nmax;
-    memory->create(array_atom, nmax_atom, 2, "fabric:array_atom");
+    if (three_d)
+      memory->grow(vector_atom, nmax_atom, "fabric:vector_atom");
+    else
+      memory->grow(array_atom, nmax_atom, 2, "fabric:array_atom");
   }
   Region *selected_region = region();
   for (int i = 0; i < atom->nlocal; i++) {
-    array_atom[i][0] = array_atom[i][1] = 0.0;
-    if (!atom_selected(atom, i, groupbit, selected_region)) continue;
-    array_atom[i][0] = contact_source.count_of(i);
-    array_atom[i][1] = current.lambda[i];
+    const bool selected = atom_selected(atom, i, groupbit, selected_region);
+    const double count = selected ? contact_source.count_of(i) : 0.0;
+    if (three_d) {
+      vector_atom[i] = count;
+      continue;
+    }
+    array_atom[i][0] = count;
+    array_atom[i][1] = selected ? current.lambda[i] : 0.0;
   }
 }
 

@@ -1,7 +1,9 @@
 /* ----------------------------------------------------------------------
    compute fabric: contact-normal and contact-force fabric of a 2D
    granular assembly (Rothenburg & Bathurst 1989), coordination numbers,
-   geometrical stability index (Momeni et al. 2022) and Love-Weber stress.
+   geometrical stability index (Momeni et al. 2022) and Love-Weber stress;
+   in 3D the fabric and force anisotropy tensors (Ouadfel & Rothenburg
+   2001, fabric_output3d.h), coordination numbers and stress.
    See doc/compute_fabric.md. Each rank reads its own contacts
    (fabric_local.h), adds them to partial sums that are merged over the
    ranks (fabric_sums.h) and fits from those; the mathematics is in
@@ -42,7 +44,7 @@ class ComputeFabric : public Compute {
   int pack_reverse_comm(int, int, double *);
   void unpack_reverse_comm(int, int *, double *);
 
-  // global vector layout (1-based in input scripts: c_ID[k])
+  // global vector layout in 2D (1-based in input scripts: c_ID[k]; 3D: fabric3d)
   enum VectorIndex {
     A = 0,
     THETA_A,
@@ -76,6 +78,7 @@ class ComputeFabric : public Compute {
   int area_ivar;        // ... the variable, found at init
   std::string idregion; // empty: no region
   int iregion;
+  bool three_d; // dimension 3: the tensors of fabric_output3d.h
 
   FabricLocal contact_source;
 
@@ -88,7 +91,7 @@ class ComputeFabric : public Compute {
     fabric::ParticleSums particles; // lambda only with stability yes
     std::vector<double> lambda;     // per local atom, when computed
     bool have_lambda = false;
-    bool with_angles = false;       // contact angles per particle collected
+    bool with_angles = false; // contact angles per particle collected
   } current;
   bool warned_no_normal;
 
@@ -100,7 +103,7 @@ class ComputeFabric : public Compute {
   // (for lambda), else counts only (cheaper, less communication)
   const StepSums &sums_now(bool with_angles);
   fabric::ParticleSums particle_sums(bool with_lambda);
-  void warn_no_normal();
+  void warn_no_normal(long count);
   double sample_area();
 };
 

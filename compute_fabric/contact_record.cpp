@@ -35,4 +35,21 @@ Contact record_contact(const double *record, double lx, double ly)
                       -record[FAX], -record[FAY], record[RADIUS_SUM]);
 }
 
+Contact3 pair_contact3(long tag_i, long tag_j, const double l_ij[3], const double force_on_i[3],
+                       double radius_sum)
+{
+  const Eigen::Vector3d l(l_ij[0], l_ij[1], l_ij[2]),
+      f(force_on_i[0], force_on_i[1], force_on_i[2]);
+  // the force on b from a: on j it is minus the force on i, on i it is that force
+  if (tag_i <= tag_j) return make_contact3(tag_i, tag_j, l, -f, radius_sum);
+  return make_contact3(tag_j, tag_i, -l, f, radius_sum);
+}
+
+Contact3 wall_contact3(long tag, const double l[3], const double force_on_particle[3],
+                       double radius)
+{
+  const Eigen::Vector3d f(force_on_particle[0], force_on_particle[1], force_on_particle[2]);
+  return make_contact3(tag, -1, Eigen::Vector3d(l[0], l[1], l[2]), -f, radius);
+}
+
 } // namespace fabric

@@ -8,6 +8,7 @@
 #include <array>
 
 #include "fabric_statistics.h"
+#include "fabric_tensors3d.h"
 
 namespace fabric {
 
@@ -30,6 +31,15 @@ ContactRecord wall_record(long tag, const double centre[2], const double contact
 // caller undoes periodic wraps, which needs the simulation box. The force on b
 // from a is minus the recorded force on a.
 Contact record_contact(const double *record, double lx, double ly);
+
+// In 3D, the contact of a row straight away: a pair/gran/local row of i and j
+// with l_ij = x_j - x_i (periodic wraps undone) and the force on i, stored with
+// a = the smaller tag as in 2D; a wall/gran/local row with l from the particle's
+// centre to the contact point and the force on the particle.
+Contact3 pair_contact3(long tag_i, long tag_j, const double l_ij[3], const double force_on_i[3],
+                       double radius_sum);
+Contact3 wall_contact3(long tag, const double l[3], const double force_on_particle[3],
+                       double radius);
 
 } // namespace fabric
 

@@ -40,13 +40,6 @@ std::string msg(const std::string &text)
   return PREFIX + text;
 }
 
-char *copy_of(const std::string &text)
-{
-  char *copy = new char[text.size() + 1];
-  strcpy(copy, text.c_str());
-  return copy;
-}
-
 } // namespace
 
 bool LAMMPS_NS::atom_selected(const Atom *atom, int i, int groupbit, Region *region)
@@ -71,7 +64,8 @@ static void merge_exact_sums(void *in, void *inout, int *len, MPI_Datatype *)
 }
 
 FabricLocal::FabricLocal(LAMMPS *lammps, Compute *fabric_compute)
-  : Pointers(lammps), owner(fabric_compute)
+  : Pointers(lammps), owner(fabric_compute), three_d(lammps->domain->dimension == 3),
+    sources(lammps, fabric_compute)
 {
   // a pair is one element, so MPI never splits one when it segments a reduction
   MPI_Type_contiguous(2, MPI_DOUBLE, &pair_type);
@@ -81,98 +75,13 @@ FabricLocal::FabricLocal(LAMMPS *lammps, Compute *fabric_compute)
 
 FabricLocal::~FabricLocal()
 {
-  delete[] pairs.id;
-  delete[] walls.id;
   MPI_Op_free(&merge_op);
   MPI_Type_free(&pair_type);
 }
 
-/* ----------------------------------------------------------------------
-   Contact forces come from LIGGGHTS' own compute pair/gran/local: the pair
-   style evaluates its contact model again at the current positions with the
-   stored contact history (not updated), so these are the forces the pair
-   applied this step. A pair style accepts only one such compute, so every
-   compute fabric reads the same one: one the user defined (before or after
-   the compute fabric), else ours, created at the first init (when every
-   compute of the input script exists) in group all, because pack_contacts
-   keeps only the contacts of the compute fabric's group anyway.
-------------------------------------------------------------------------- */
-
 void FabricLocal::init(bool with_walls)
 {
-  init_source(pairs, "_contacts");
-  if (!with_walls) return;
-  // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
-  // wall is recognised by the mesh fixes it needs)
-  if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
-    error->all(FLERR, keyword_message(PREFIX, "walls", "yes",
-                                      "needs a fix wall/gran with mesh walls (LIGGGHTS reports "
-                                      "no contact forces for primitive walls); use mesh walls "
-                                      "(fix mesh/surface and fix wall/gran ... mesh) or walls no")
-                          .c_str());
-  init_source(walls, "_walls");
-}
-
-void FabricLocal::init_source(ContactSource &src, const char *suffix)
-{
-  find_source(src);
-  if (!src.compute && src.id) {
-    // deleted (uncompute) since the last run: read another one, or ours
-    delete[] src.id;
-    src.id = nullptr;
-    find_source(src);
-  }
-  if (!src.compute) create_source(src, suffix);
-}
-
-void FabricLocal::find_source(ContactSource &src)
-{
-  src.compute = nullptr;
-  const std::string fabric_group = group->names[owner->igroup];
-  for (int i = 0; i < modify->ncompute; i++) {
-    Compute *c = modify->compute[i];
-    if (c == owner || strcmp(c->style, src.style) != 0) continue;
-    if (src.id && strcmp(c->id, src.id) != 0) continue;
-    const std::string source_group = group->names[c->igroup];
-    const std::string named =
-        std::string("compute ") + c->id + " (" + src.style + ", group " + source_group + ")";
-    ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
-    if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
-      error->all(FLERR, msg(named + " lacks the values pos, id or force that compute " + owner->id +
-                            " (fabric) reads from it; define it as compute " + c->id + " " +
-                            source_group + " " + src.style + " pos id force")
-                            .c_str());
-    if (c->igroup != 0 && c->igroup != owner->igroup)
-      error->all(FLERR, msg("compute " + std::string(owner->id) + " (fabric, group " +
-                            fabric_group + ") reads the contacts from " + named +
-                            ", which leaves out the contacts outside group " + source_group +
-                            "; define compute " + c->id +
-                            " in group all: a pair style takes one compute " + src.style +
-                            " and every compute fabric reads it")
-                            .c_str());
-    src.compute = found;
-    if (!src.id) src.id = copy_of(c->id);
-    return;
-  }
-}
-
-void FabricLocal::create_source(ContactSource &src, const char *suffix)
-{
-  delete[] src.id;
-  src.id = copy_of(std::string(owner->id) + suffix);
-
-  char *args[6] = {src.id,        (char *)"all", const_cast<char *>(src.style),
-                   (char *)"pos", (char *)"id",  (char *)"force"};
-  // pair/gran/local refuses to be created after a run ("define this compute
-  // before first run"), which includes any script that starts with read_restart.
-  // The check protects its optional 'history' columns, whose layout is fixed when
-  // the pair style first runs; we ask for pos, id and force only, which the pair
-  // reports at any time, so we create it as if at step 0.
-  const bigint now = update->ntimestep;
-  update->ntimestep = 0;
-  modify->add_compute(6, args);
-  update->ntimestep = now;
-  src.compute = static_cast<ComputePairGranLocal *>(modify->compute[modify->ncompute - 1]);
+  sources.init(with_walls);
 }
 
 /* ----------------------------------------------------------------------
@@ -195,6 +104,8 @@ int FabricLocal::collect(Region *region, bool angles_wanted)
   bool refreshed = false;
   with_angles = angles_wanted;
   local.clear();
+  local3.clear();
+  missing.clear();
   theta.clear();
   const int nall = atom->nlocal + atom->nghost;
   counts.assign(nall, 0);
@@ -202,14 +113,14 @@ int FabricLocal::collect(Region *region, bool angles_wanted)
     if (static_cast<int>(ends.size()) < nall) ends.resize(nall);
     for (int i = 0; i < nall; i++) ends[i].clear();
   }
-  for (ContactSource *src : {&pairs, &walls}) {
-    if (!src->compute) continue;
-    if (src->compute->invoked_local != update->ntimestep) {
+  for (ComputePairGranLocal *src : {sources.pairs(), sources.walls()}) {
+    if (!src) continue;
+    if (src->invoked_local != update->ntimestep) {
       if (!refreshed) comm->forward_comm();
       refreshed = true;
-      src->compute->compute_local();
+      src->compute_local();
     }
-    add_rows(*src, src == &walls, region);
+    add_rows(src, src == sources.walls(), region);
   }
   sent.assign(nall, 0);
   return send_ends_round();
@@ -220,6 +131,7 @@ void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
   local.push_back(c);
   counts[index_a]++;
   if (index_b >= 0) counts[index_b]++;
+  if (!has_normal(c)) missing.push_back({c.a, c.b, std::hypot(c.lx, c.ly)});
   if (!with_angles) return;
   // a contact without a normal counts for both particles but has no angle
   const double angle = has_normal(c) ? std::atan2(c.ny, c.nx) : NAN;
@@ -228,11 +140,18 @@ void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
   if (index_b >= 0) ends[index_b].push_back(angle + M_PI);
 }
 
+void FabricLocal::add_contact3(const Contact3 &c, int index_a, int index_b)
+{
+  local3.push_back(c);
+  counts[index_a]++;
+  if (index_b >= 0) counts[index_b]++;
+  if (!has_normal(c)) missing.push_back({c.a, c.b, c.l.norm()});
+}
+
 // A pair/gran/local of group all (the user's) reports contacts outside the
 // group, and a region leaves out more: both ends must be selected.
-void FabricLocal::add_rows(const ContactSource &src, bool wall, Region *region)
+void FabricLocal::add_rows(ComputePairGranLocal *c, bool wall, Region *region)
 {
-  ComputePairGranLocal *c = src.compute;
   const int nrows = c->size_local_rows, nlocal = atom->nlocal;
   double **rows = c->get_data();
   const int ox = c->offset_x1(), oid = c->offset_id1(), of = c->offset_f();
@@ -248,6 +167,13 @@ void FabricLocal::add_rows(const ContactSource &src, bool wall, Region *region)
       const int ip = atom->map(static_cast<int>(row[oid + 2]));
       if (ip < 0 || ip >= nlocal || !(atom->mask[ip] & groupbit)) continue;
       if (region && !region->match(xp[0], xp[1], xp[2])) continue;
+      if (three_d) {
+        double l[3] = {cp[0] - xp[0], cp[1] - xp[1], cp[2] - xp[2]};
+        domain->minimum_image(l[0], l[1], l[2]);
+        add_contact3(wall_contact3(static_cast<long>(row[oid + 2]), l, row + of, atom->radius[ip]),
+                     ip, -1);
+        continue;
+      }
       rec = wall_record(static_cast<long>(row[oid + 2]), xp, cp, row + of, atom->radius[ip]);
       index_a = ip;
     } else {
@@ -261,9 +187,16 @@ void FabricLocal::add_rows(const ContactSource &src, bool wall, Region *region)
       if (!(atom->mask[ia] & groupbit) || !(atom->mask[ib] & groupbit)) continue;
       if (region && (!region->match(xa[0], xa[1], xa[2]) || !region->match(xb[0], xb[1], xb[2])))
         continue;
-      rec = pair_record(tag_i, tag_j, xa, xb, row + of, atom->radius[ia] + atom->radius[ib]);
       index_a = tag_i < tag_j ? ia : ib;
       index_b = tag_i < tag_j ? ib : ia;
+      if (three_d) {
+        double l[3] = {xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]};
+        domain->minimum_image(l[0], l[1], l[2]);
+        add_contact3(pair_contact3(tag_i, tag_j, l, row + of, atom->radius[ia] + atom->radius[ib]),
+                     index_a, index_b);
+        continue;
+      }
+      rec = pair_record(tag_i, tag_j, xa, xb, row + of, atom->radius[ia] + atom->radius[ib]);
     }
     // positions are remapped into the box: undo a periodic wrap
     double lx = rec[XB] - rec[XA], ly = rec[YB] - rec[YA], dz = 0.0;
@@ -352,30 +285,46 @@ bool FabricLocal::reduce(FabricSums &sums, ParticleSums &particles, int left)
 
 // (tag a, tag b) as one key in the order of the old sorted list: a wall
 // (b = -1) after the particles a touches. LIGGGHTS' tags are ints.
-void FabricLocal::first_missing_normal(long &a, long &b, double &distance)
+/* ----------------------------------------------------------------------
+   contacts with coincident centres (fabric::make_contact): printed by rank
+   0, naming the pair with the smallest tags over all ranks
+------------------------------------------------------------------------- */
+
+void FabricLocal::warn_missing_normals(long count, const std::string &count_output)
 {
   unsigned long long key = std::numeric_limits<unsigned long long>::max(), first = 0;
-  double length = std::numeric_limits<double>::infinity();
-  for (const Contact &c : local) {
-    if (has_normal(c)) continue;
+  double length = std::numeric_limits<double>::infinity(), distance = 0.0;
+  for (const MissingNormal &c : missing) {
     const unsigned long long k = (static_cast<unsigned long long>(c.a) << 32) |
                                  static_cast<uint32_t>(static_cast<int64_t>(c.b));
     if (k < key) {
       key = k;
-      length = std::hypot(c.lx, c.ly);
+      length = c.length;
     }
   }
   MPI_Allreduce(&key, &first, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, world);
   if (key != first) length = std::numeric_limits<double>::infinity();
   MPI_Allreduce(&length, &distance, 1, MPI_DOUBLE, MPI_MIN, world);
-  a = static_cast<long>(first >> 32);
+  if (comm->me != 0) return;
+  const long a = static_cast<long>(first >> 32);
   const uint32_t low = static_cast<uint32_t>(first & 0xffffffffULL);
-  b = low == 0xffffffffU ? -1 : static_cast<long>(low);
+  const std::string pair = low == 0xffffffffU
+                               ? "atom " + std::to_string(a) + " and a mesh wall"
+                               : "atoms " + std::to_string(a) + " and " + std::to_string(low);
+  const std::string text =
+      msg(std::to_string(count) + " contact(s) with coincident centres (" + pair + ", distance " +
+          number_text(distance) +
+          ") have no normal; left out of the fabric and force directions, the stress and the "
+          "stability index, still counted in N_c, C_n and Z_m (" +
+          count_output + " is their number); were two atoms created at one point? (warned once)");
+  error->warning(FLERR, text.c_str());
 }
 
 double FabricLocal::memory_usage() const
 {
-  double bytes = static_cast<double>(local.capacity()) * sizeof(Contact);
+  double bytes = static_cast<double>(local.capacity()) * sizeof(Contact) +
+                 static_cast<double>(local3.capacity()) * sizeof(Contact3) +
+                 static_cast<double>(missing.capacity()) * sizeof(MissingNormal);
   bytes += theta.capacity() * sizeof(double);
   for (const std::vector<double> &e : ends) bytes += e.capacity() * sizeof(double);
   return bytes + (sent.capacity() + counts.capacity()) * sizeof(int);

@@ -16,9 +16,12 @@
 
 #include <mpi.h>
 
+#include <string>
 #include <vector>
 
 #include "fabric_sums.h"
+#include "fabric_tensors3d.h"
+#include "gran_local_sources.h"
 #include "pointers.h"
 
 namespace LAMMPS_NS {
@@ -58,7 +61,8 @@ class FabricLocal : protected Pointers {
   int collect(Region *region, bool with_angles);
   // the rounds until no rank has angles left (collective)
   void finish_ends();
-  const std::vector<fabric::Contact> &contacts() const { return local; }
+  const std::vector<fabric::Contact> &contacts() const { return local; }    // in 2D
+  const std::vector<fabric::Contact3> &contacts3() const { return local3; } // in 3D
   // atan2(ny, nx) of each contact (NaN without a normal), after a collect
   // with_angles (else empty)
   const std::vector<double> &angles() const { return theta; }
@@ -74,10 +78,10 @@ class FabricLocal : protected Pointers {
   // both sums at once, and whether any rank had angles `left` (collect)
   bool reduce(fabric::FabricSums &sums, fabric::ParticleSums &particles, int left);
 
-  // the contact without a normal with the smallest (tag a, tag b) over all ranks,
-  // its tags and the length of its branch vector (collective; call only when
-  // there is one)
-  void first_missing_normal(long &a, long &b, double &distance);
+  // the warning (by rank 0) that `count` contacts have no normal, naming the one
+  // with the smallest (tag a, tag b) over all ranks and `count_output`, the
+  // output that counts them (collective; call only when there is one)
+  void warn_missing_normals(long count, const std::string &count_output);
 
   int pack_ends(int n, int first, double *buf);
   void unpack_ends(int n, const int *list, const double *buf);
@@ -85,15 +89,18 @@ class FabricLocal : protected Pointers {
   double memory_usage() const;
 
  private:
-  struct ContactSource {
-    const char *style;
-    char *id = nullptr; // the user's compute, or ours
-    ComputePairGranLocal *compute = nullptr;
+  // a contact without a normal: its tags and the length of its branch vector
+  struct MissingNormal {
+    long a, b;
+    double length;
   };
 
   Compute *owner; // the compute fabric
-  ContactSource pairs{"pair/gran/local"}, walls{"wall/gran/local"};
+  bool three_d;   // domain->dimension == 3: contacts3(), else contacts()
+  GranLocalSources sources;
   std::vector<fabric::Contact> local;
+  std::vector<fabric::Contact3> local3;
+  std::vector<MissingNormal> missing;
   std::vector<double> theta;             // per contact, see angles()
   bool with_angles = false;              // of the last collect
   std::vector<int> counts;               // contact ends by local index, up to nall
@@ -102,11 +109,9 @@ class FabricLocal : protected Pointers {
   MPI_Datatype pair_type;                // (hi, lo) of an ExactSum
   MPI_Op merge_op;
 
-  void find_source(ContactSource &src);
-  void create_source(ContactSource &src, const char *suffix);
-  void init_source(ContactSource &src, const char *suffix);
-  void add_rows(const ContactSource &src, bool wall, Region *region);
+  void add_rows(ComputePairGranLocal *source, bool wall, Region *region);
   void add_contact(const fabric::Contact &c, int index_a, int index_b);
+  void add_contact3(const fabric::Contact3 &c, int index_a, int index_b);
   int send_ends_round();
 };
 

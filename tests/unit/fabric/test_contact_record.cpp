@@ -58,4 +58,33 @@ TEST(RecordContact, UsesTheGivenBranchVectorAndKeepsTheWall)
   EXPECT_EQ(k.lx, 0.2);
 }
 
+// In 3D: the same contact seen from either end is the same contact; the force
+// on b is minus the force on a.
+TEST(PairContact3, EitherEndGivesTheSameContact)
+{
+  const double l_37[3] = {0, 0.6, 0.8}, l_73[3] = {0, -0.6, -0.8};
+  const double f_on_3[3] = {1, -3, -4}, f_on_7[3] = {-1, 3, 4};
+  for (const fabric::Contact3 &k : {fabric::pair_contact3(3, 7, l_37, f_on_3, 1.0),
+                                    fabric::pair_contact3(7, 3, l_73, f_on_7, 1.0)}) {
+    EXPECT_EQ(k.a, 3);
+    EXPECT_EQ(k.b, 7);
+    EXPECT_NEAR(k.n.y(), 0.6, 1e-15);
+    EXPECT_NEAR(k.n.z(), 0.8, 1e-15);
+    EXPECT_NEAR(k.fn, 5.0, 1e-14); // (-1, 3, 4) . (0, 0.6, 0.8)
+    EXPECT_NEAR(k.ft.x(), -1.0, 1e-15);
+    EXPECT_NEAR(k.l.z(), 0.8, 1e-15);
+  }
+}
+
+TEST(WallContact3, WallIsTagMinusOneAndPushedByTheParticle)
+{
+  const double l[3] = {0, 0, -0.5}, f_on_particle[3] = {0, 0, 4};
+  const fabric::Contact3 k = fabric::wall_contact3(5, l, f_on_particle, 0.5);
+  EXPECT_EQ(k.a, 5);
+  EXPECT_EQ(k.b, -1);
+  EXPECT_EQ(k.n, Eigen::Vector3d(0, 0, -1));
+  EXPECT_EQ(k.fn, 4.0);
+  EXPECT_EQ(k.l, Eigen::Vector3d(0, 0, -0.5));
+}
+
 } // namespace
