@@ -109,7 +109,8 @@ void FixMembrane3d::read_vtk(StyleArgs &args)
     if (file == k) args.bad("the file name is the keyword '" + file + "'", USE_VTK);
   vtk.name(file);
   char reason[256] = "";
-  if (comm->me == 0) std::snprintf(reason, sizeof(reason), "%s", vtk.start(update->ntimestep).c_str());
+  if (comm->me == 0)
+    std::snprintf(reason, sizeof(reason), "%s", vtk.start(update->ntimestep).c_str());
   MPI_Bcast(reason, sizeof(reason), MPI_CHAR, 0, world);
   if (reason[0])
     error->all(FLERR, keyword_message(PREFIX, "vtk", vtk.pvd(),
@@ -171,9 +172,9 @@ void FixMembrane3d::evaluate_inputs()
   platens.hi = zhi_in.checked(lmp, PREFIX, "zhi", false, v[2]);
   if (!(platens.lo < platens.hi))
     error->all(FLERR, keyword_message(PREFIX, "zlo", zlo_in.text(),
-                                      "is " + number_text(platens.lo) + ", not below zhi = " +
-                                          number_text(platens.hi) + " at step " +
-                                          std::to_string(update->ntimestep) +
+                                      "is " + number_text(platens.lo) +
+                                          ", not below zhi = " + number_text(platens.hi) +
+                                          " at step " + std::to_string(update->ntimestep) +
                                           "; zlo is the lower platen surface, zhi the upper one")
                           .c_str());
 }
@@ -225,8 +226,8 @@ void FixMembrane3d::detect()
   check_between_platens(all);
   std::vector<int> index;
   try {
-    topology = membrane3d::members_only(membrane3d::detect_membrane(all.spheres, platens, tolerance),
-                                        index);
+    topology = membrane3d::members_only(
+        membrane3d::detect_membrane(all.spheres, platens, tolerance), index);
   } catch (const std::exception &e) {
     fail(e.what(), "the group must be one packing whose spheres are linked (gaps within the "
                    "tolerance)");
@@ -248,7 +249,8 @@ void FixMembrane3d::place_and_apply()
   check_between_platens(members);
   membrane3d::LateralSurface membrane;
   try {
-    membrane = membrane3d::place_membrane(topology, members.spheres, platens);
+    membrane = membrane3d::place_membrane(topology, members.spheres, platens,
+                                          membrane3d::Vertices::outer_faces);
   } catch (const std::exception &e) {
     fail(e.what(), "the membrane found at the last detection cannot be placed");
   }
@@ -280,19 +282,30 @@ void FixMembrane3d::place_and_apply()
     on_surface += s == membrane3d::Side::surface;
     escaped += s == membrane3d::Side::outside;
   }
-  const double volume = membrane3d::lateral_volume(membrane.surface);
-  output[VOLUME] = volume;
-  output[EQUIVALENT_RADIUS] = membrane3d::equivalent_radius(volume, platens.hi - platens.lo);
+  centres_placed = false; // the volume through the centres when it is asked for
   output[MEMBRANE_SPHERES] = on_surface;
   output[ESCAPED_SPHERES] = escaped;
   output[FACETS] = static_cast<double>(membrane.surface.facets.size());
   output[DETECTIONS] = detections;
   output[AXIAL_FORCE] = net.z();
   output[LATERAL_FORCE] = net.head<2>().norm();
-  const double outer = volume + membrane3d::skin_volume(membrane, members.spheres);
+  const double outer = membrane3d::lateral_volume(membrane.surface);
   output[OUTER_VOLUME] = outer;
   output[OUTER_RADIUS] = membrane3d::equivalent_radius(outer, platens.hi - platens.lo);
   write_frame(membrane);
+}
+
+// The membrane through the centres, placed on this step's spheres only for its volume.
+double FixMembrane3d::compute_vector(int n)
+{
+  if ((n == VOLUME || n == EQUIVALENT_RADIUS) && !centres_placed && !topology.facets.empty()) {
+    const double volume = membrane3d::lateral_volume(
+        membrane3d::place_membrane(topology, members.spheres, platens).surface);
+    output[VOLUME] = volume;
+    output[EQUIVALENT_RADIUS] = membrane3d::equivalent_radius(volume, platens.hi - platens.lo);
+    centres_placed = true;
+  }
+  return output[n];
 }
 
 /* ---------------------------------------------------------------------- */

@@ -36,8 +36,17 @@ class FixMembrane3d : public Fix {
  public:
   // the global vector (doc/fix_membrane3d.md, Output)
   enum Output {
-    VOLUME, EQUIVALENT_RADIUS, MEMBRANE_SPHERES, ESCAPED_SPHERES, FACETS, DETECTIONS,
-    AXIAL_FORCE, LATERAL_FORCE, OUTER_VOLUME, OUTER_RADIUS, OUTPUT_SIZE
+    VOLUME,
+    EQUIVALENT_RADIUS,
+    MEMBRANE_SPHERES,
+    ESCAPED_SPHERES,
+    FACETS,
+    DETECTIONS,
+    AXIAL_FORCE,
+    LATERAL_FORCE,
+    OUTER_VOLUME,
+    OUTER_RADIUS,
+    OUTPUT_SIZE
   };
 
   FixMembrane3d(class LAMMPS *, int, char **);
@@ -45,7 +54,7 @@ class FixMembrane3d : public Fix {
   void init();
   void setup(int);
   void post_force(int);
-  double compute_vector(int n) { return output[n]; }
+  double compute_vector(int n);
   // restart: the last detection (its topology over atom IDs, its step) and the
   // counter, so that a run continued from the file gives the output of one
   // straight through
@@ -60,7 +69,7 @@ class FixMembrane3d : public Fix {
   double tolerance_given = -1.0;           // -1: the default, from the mean diameter
   int every = 1;
   double tolerance = 0.0;
-  bigint vtk_every = 0;  // keyword vtk: frames every this many steps, 0: none
+  bigint vtk_every = 0; // keyword vtk: frames every this many steps, 0: none
   vtk_series::Series vtk;
 
   // the last detection: its topology over the member atoms, their IDs, its step
@@ -76,6 +85,7 @@ class FixMembrane3d : public Fix {
   bool warned_rim = false;
   bool warned_spread = false; // an input differing between the ranks, once per fix
   double output[OUTPUT_SIZE];
+  bool centres_placed = false; // output[VOLUME] is this step's
 
   void read_vtk(class StyleArgs &args);
   void write_frame(const membrane3d::LateralSurface &membrane);

@@ -1,5 +1,7 @@
 #include "lateral_surface.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -19,14 +21,16 @@ struct Mirrored {
   std::vector<int> original, image;
 };
 
-Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p) {
+Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p)
+{
   Eigen::Vector3d y = x;
   if (image != 0) y.z() = 2 * (image < 0 ? p.lo : p.hi) - x.z();
   return y;
 }
 
 Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
-                           double tolerance) {
+                           double tolerance)
+{
   double r_max = 0;
   for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
   const double band = 3 * (2 * r_max + tolerance);
@@ -52,7 +56,7 @@ struct ClipPoint {
   Eigen::Vector3d x;
   std::array<double, 3> w;
   std::int64_t key;
-  int vertex;  // the facet vertex it is, -1 for a cut point
+  int vertex; // the facet vertex it is, -1 for a cut point
 };
 
 // At most five corners: a triangle clipped by two planes.
@@ -64,12 +68,15 @@ struct Polygon {
 
 // Facets given by their vertices' ids (shared between facets), positions and spheres.
 class PlatenClip {
-public:
+ public:
   PlatenClip(std::int64_t n_ids, const Platens &p)
-      : n_ids_(n_ids), platens_(p), vertex_corner_(static_cast<std::size_t>(n_ids), -1) {}
+    : n_ids_(n_ids), platens_(p), vertex_corner_(static_cast<std::size_t>(n_ids), -1)
+  {
+  }
 
   void add_facet(const std::array<int, 3> &f, const std::array<Eigen::Vector3d, 3> &x,
-                 const std::array<int, 3> &sphere) {
+                 const std::array<int, 3> &sphere)
+  {
     Polygon poly;
     for (int j = 0; j < 3; ++j) {
       std::array<double, 3> w{0, 0, 0};
@@ -87,14 +94,15 @@ public:
 
   LateralSurface result() && { return std::move(out_); }
 
-private:
+ private:
   std::int64_t n_ids_;
   Platens platens_;
   LateralSurface out_;
   std::vector<int> vertex_corner_;                   // by vertex id, -1: none yet
-  std::unordered_map<std::int64_t, int> cut_corner_;  // by edge_key
+  std::unordered_map<std::int64_t, int> cut_corner_; // by edge_key
 
-  std::int64_t edge_key(int u, int v, int plane) const {
+  std::int64_t edge_key(int u, int v, int plane) const
+  {
     return (static_cast<std::int64_t>(std::min(u, v)) * n_ids_ + std::max(u, v)) * 3 + plane;
   }
 
@@ -102,7 +110,8 @@ private:
   // between two facet vertices is computed from its lower-numbered sphere, so that the
   // two facets on that edge get the same bits.
   Polygon clip(const Polygon &in, const std::array<int, 3> &f, double level, int side,
-               int plane) const {
+               int plane) const
+  {
     Polygon out;
     for (int k = 0; k < in.n; ++k) {
       const ClipPoint &p = in.corner[k], &q = in.corner[(k + 1) % in.n];
@@ -123,7 +132,8 @@ private:
   }
 
   int corner_index(const ClipPoint &q, const std::array<int, 3> &f,
-                   const std::array<int, 3> &sphere) {
+                   const std::array<int, 3> &sphere)
+  {
     int *known = nullptr;
     if (q.vertex >= 0) {
       known = &vertex_corner_[f[q.vertex]];
@@ -150,7 +160,8 @@ private:
   }
 };
 
-void check_platens(const std::vector<Sphere> &spheres, const Platens &p) {
+void check_platens(const std::vector<Sphere> &spheres, const Platens &p)
+{
   if (spheres.size() < 4)
     throw std::invalid_argument(std::to_string(spheres.size()) +
                                 " spheres: a surface needs at least four");
@@ -160,14 +171,14 @@ void check_platens(const std::vector<Sphere> &spheres, const Platens &p) {
   for (std::size_t i = 0; i < spheres.size(); ++i)
     if (!(spheres[i].x.z() > p.lo && spheres[i].x.z() < p.hi))
       throw std::invalid_argument("sphere " + std::to_string(i) + " at z = " +
-                                  std::to_string(spheres[i].x.z()) +
-                                  " is not between the platens");
+                                  std::to_string(spheres[i].x.z()) + " is not between the platens");
 }
 
 } // namespace
 
 MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Platens &platens,
-                                 double tolerance) {
+                                 double tolerance)
+{
   check_platens(spheres, platens);
   const Mirrored m = mirror_in_platens(spheres, platens, tolerance);
   const Boundary boundary = exterior_boundary(m.spheres, m.sealed, tolerance);
@@ -186,7 +197,8 @@ MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Plate
   return t;
 }
 
-MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members) {
+MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members)
+{
   std::vector<int> index(topology.side.size(), -1);
   for (const auto &f : topology.facets)
     for (const MembraneVertex &v : f) index.at(v.sphere) = 0;
@@ -207,30 +219,95 @@ MembraneTopology members_only(const MembraneTopology &topology, std::vector<int>
   return out;
 }
 
-LateralSurface place_membrane(const MembraneTopology &topology,
-                              const std::vector<Sphere> &spheres, const Platens &platens) {
+namespace {
+
+void check_placement(const MembraneTopology &topology, const std::vector<Sphere> &spheres,
+                     const Platens &platens)
+{
   check_platens(spheres, platens);
   if (topology.side.size() != spheres.size())
     throw std::invalid_argument("a topology of " + std::to_string(topology.side.size()) +
                                 " spheres placed on " + std::to_string(spheres.size()));
+  for (const auto &f : topology.facets)
+    for (const MembraneVertex &v : f)
+      if (v.sphere < 0 || v.sphere >= static_cast<int>(spheres.size()))
+        throw std::invalid_argument("a facet has sphere " + std::to_string(v.sphere) + " of " +
+                                    std::to_string(spheres.size()));
+}
+
+// An eigenvalue of the normals' matrix below this fraction of the largest is a
+// direction the facets do not constrain (along an edge, or the whole tangent plane
+// of a flat face): the offset has no component there.
+constexpr double kUnconstrained = 1e-3;
+constexpr double kLongestOffset = 2.0; // in radii; a cube's corner is sqrt(3)
+
+} // namespace
+
+std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology,
+                                                const std::vector<Sphere> &spheres,
+                                                const Platens &platens)
+{
+  check_placement(topology, spheres, platens);
+  std::vector<Eigen::Matrix3d> normals(spheres.size(), Eigen::Matrix3d::Zero());
+  std::vector<Eigen::Vector3d> sum(spheres.size(), Eigen::Vector3d::Zero());
+  for (const auto &f : topology.facets) {
+    std::array<Eigen::Vector3d, 3> x;
+    for (int j = 0; j < 3; ++j) x[j] = image_position(spheres[f[j].sphere].x, f[j].image, platens);
+    const Eigen::Vector3d a = facet_vector_area(x[0], x[1], x[2]);
+    const double area = a.norm();
+    if (!(area > 0)) continue;
+    for (const MembraneVertex &v : f) {
+      Eigen::Vector3d n = a / area;
+      if (v.image != 0) n.z() = -n.z(); // the facet at an image, seen at its sphere
+      normals[v.sphere] += area * n * n.transpose();
+      sum[v.sphere] += area * n;
+    }
+  }
+  std::vector<Eigen::Vector3d> offset(spheres.size(), Eigen::Vector3d::Zero());
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    if (sum[i].isZero(0)) continue;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normals[i]);
+    const double largest = eigen.eigenvalues().maxCoeff();
+    Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const double lambda = eigen.eigenvalues()(k);
+      if (lambda <= kUnconstrained * largest) continue;
+      const Eigen::Vector3d v = eigen.eigenvectors().col(k);
+      o += (v.dot(sum[i]) / lambda) * v;
+    }
+    o *= spheres[i].r;
+    const double longest = kLongestOffset * spheres[i].r;
+    if (o.norm() > longest) o *= longest / o.norm();
+    offset[i] = o;
+  }
+  return offset;
+}
+
+LateralSurface place_membrane(const MembraneTopology &topology, const std::vector<Sphere> &spheres,
+                              const Platens &platens, Vertices at)
+{
+  check_placement(topology, spheres, platens);
+  std::vector<Eigen::Vector3d> vertex(spheres.size());
+  for (std::size_t i = 0; i < spheres.size(); ++i) vertex[i] = spheres[i].x;
+  if (at == Vertices::outer_faces) {
+    const std::vector<Eigen::Vector3d> o = outer_face_offsets(topology, spheres, platens);
+    for (std::size_t i = 0; i < spheres.size(); ++i) vertex[i] += o[i];
+  }
   PlatenClip clip(3 * static_cast<std::int64_t>(spheres.size()), platens);
   for (const auto &f : topology.facets) {
     std::array<int, 3> id, sphere;
     std::array<Eigen::Vector3d, 3> x;
     for (int j = 0; j < 3; ++j) {
       sphere[j] = f[j].sphere;
-      if (sphere[j] < 0 || sphere[j] >= static_cast<int>(spheres.size()))
-        throw std::invalid_argument("a facet has sphere " + std::to_string(sphere[j]) + " of " +
-                                    std::to_string(spheres.size()));
       id[j] = 3 * sphere[j] + f[j].image + 1;
-      x[j] = image_position(spheres[sphere[j]].x, f[j].image, platens);
+      x[j] = image_position(vertex[sphere[j]], f[j].image, platens);
     }
     clip.add_facet(id, x, sphere);
   }
   LateralSurface out = std::move(clip).result();
   out.side = topology.side;
   for (Side &s : out.side)
-    if (s == Side::surface) s = Side::inside;  // set again below from the loads
+    if (s == Side::surface) s = Side::inside; // set again below from the loads
   for (const Corner &c : out.corners)
     for (int j = 0; j < 3; ++j)
       if (c.sphere[j] >= 0 && c.weight[j] > 0) out.side[c.sphere[j]] = Side::surface;
@@ -238,12 +315,14 @@ LateralSurface place_membrane(const MembraneTopology &topology,
 }
 
 LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
-                               double tolerance) {
-  return place_membrane(detect_membrane(spheres, platens, tolerance), spheres, platens);
+                               double tolerance, Vertices at)
+{
+  return place_membrane(detect_membrane(spheres, platens, tolerance), spheres, platens, at);
 }
 
-std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
-                                            std::size_t n_spheres, double p) {
+std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane, std::size_t n_spheres,
+                                            double p)
+{
   const std::vector<Eigen::Vector3d> at_corner = pressure_forces(membrane.surface, p);
   std::vector<Eigen::Vector3d> load(n_spheres, Eigen::Vector3d::Zero());
   for (std::size_t k = 0; k < at_corner.size(); ++k) {
@@ -254,26 +333,8 @@ std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
   return load;
 }
 
-double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres) {
-  return lateral_volume(membrane.surface) + skin_volume(membrane, spheres);
-}
-
-double skin_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres) {
-  const Surface &s = membrane.surface;
-  double offset = 0;
-  for (const auto &f : s.facets) {
-    double r = 0;
-    for (int v : f) {
-      const Corner &c = membrane.corners[v];
-      for (int j = 0; j < 3; ++j)
-        if (c.sphere[j] >= 0) r += c.weight[j] * spheres.at(c.sphere[j]).r / 3;
-    }
-    offset += facet_vector_area(s.points[f[0]], s.points[f[1]], s.points[f[2]]).norm() * r;
-  }
-  return offset;
-}
-
-Eigen::Vector2d membrane_axis(const LateralSurface &membrane) {
+Eigen::Vector2d membrane_axis(const LateralSurface &membrane)
+{
   const Surface &s = membrane.surface;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   double area = 0;
@@ -285,8 +346,9 @@ Eigen::Vector2d membrane_axis(const LateralSurface &membrane) {
   return area > 0 ? Eigen::Vector2d(sum / area) : Eigen::Vector2d::Zero();
 }
 
-void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres,
-                      double p, std::vector<Eigen::Vector3d> &load) {
+void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres, double p,
+                      std::vector<Eigen::Vector3d> &load)
+{
   const Eigen::Vector2d axis = membrane_axis(membrane);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (membrane.side.at(i) != Side::outside) continue;

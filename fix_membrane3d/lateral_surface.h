@@ -13,10 +13,15 @@
 // it is sealed to the platen as a latex sleeve is, and where the end layer stands off
 // the platen by up to T it hangs from the outermost spheres down to the platen.
 //
-// Vertex convention: the membrane runs through the sphere centres (a clipped facet
-// has corners on its edges, in the platen planes). The volume is therefore that of
-// the polyhedron of the surface spheres' centres, less than the volume inside the
-// spheres' outer faces by about half a surface sphere's thickness times the area.
+// Vertex convention (Vertices): through the sphere centres, or on the spheres' outer
+// faces, where the latex lies: each centre moved out by o_i, the least-squares
+// solution of o . n_f = r_i over the facets f on sphere i (area-weighted), so that
+// every facet plane of a flat face moves out by r, an edge between two faces by r
+// along both normals and a cube's corner to its corner (|o_i| at most 2 r_i). On the
+// outer faces the loads sum to p times the sample's cross-section to its outer
+// faces, as a rigid wall's would: through the centres a box of side W gets only
+// (W - 2 r) / W of it, a cylinder of radius R (R - r) / R (a clipped facet has
+// corners on its edges, in the platen planes, either way).
 //
 // Loads: the pressure on the part of a facet between the platens is shared among the
 // facet's spheres as the consistent loads of a uniform pressure on a linear triangle,
@@ -36,7 +41,7 @@
 namespace membrane3d {
 
 struct Platens {
-  double lo, hi;  // z of the lower and upper platen
+  double lo, hi; // z of the lower and upper platen
 };
 
 // A corner of the lateral surface as weights over up to three spheres (-1: unused).
@@ -46,10 +51,10 @@ struct Corner {
 };
 
 struct LateralSurface {
-  Surface surface;              // the corners as points, facets counter-clockwise from outside
-  std::vector<Corner> corners;  // one per surface point
-  std::vector<Side> side;       // per sphere: surface when it carries a load
-  bool reaches_lo = false, reaches_hi = false;  // a rim on each platen
+  Surface surface;             // the corners as points, facets counter-clockwise from outside
+  std::vector<Corner> corners; // one per surface point
+  std::vector<Side> side;      // per sphere: surface when it carries a load
+  bool reaches_lo = false, reaches_hi = false; // a rim on each platen
 };
 
 // A vertex of the membrane: a sphere, or its image in the lower (-1) or upper (+1) platen.
@@ -63,7 +68,7 @@ struct MembraneVertex {
 // on the spheres' positions of each step (place_membrane) and found again now and then.
 struct MembraneTopology {
   std::vector<std::array<MembraneVertex, 3>> facets;
-  std::vector<Side> side;  // per sphere
+  std::vector<Side> side; // per sphere
 };
 
 // The topology of the spheres' membrane. Throws std::invalid_argument for platens not
@@ -77,35 +82,35 @@ MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Plate
 // their order; `members` gets their indices in the detection's spheres.
 MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members);
 
+enum class Vertices { centres, outer_faces };
+
+// The offsets o_i of the outer-face convention (zero for a sphere on no facet).
+std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology,
+                                                const std::vector<Sphere> &spheres,
+                                                const Platens &platens);
+
 // The membrane on `spheres` (indexed as the topology): facets clipped at the platens,
-// corners, loads' weights. Throws std::invalid_argument for platens not in order, a
-// centre not strictly between them, or a facet whose sphere is not in `spheres`.
-LateralSurface place_membrane(const MembraneTopology &topology,
-                              const std::vector<Sphere> &spheres, const Platens &platens);
+// corners, loads' weights, its vertices `at` the centres or the outer faces. Throws
+// std::invalid_argument for platens not in order, a centre not strictly between them,
+// or a facet whose sphere is not in `spheres`.
+LateralSurface place_membrane(const MembraneTopology &topology, const std::vector<Sphere> &spheres,
+                              const Platens &platens, Vertices at = Vertices::centres);
 
 // detect_membrane, then place_membrane on the same spheres.
 LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
-                               double tolerance);
+                               double tolerance, Vertices at = Vertices::centres);
 
 // The membrane's load on each sphere (zero off the surface) at pressure p.
-std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane,
-                                            std::size_t n_spheres, double p);
-
-// The volume to the membrane spheres' outer faces, to first order in their radii: the
-// volume through the centres plus the membrane's area times the area-weighted mean
-// radius of its spheres (the parallel surface at that distance; it leaves out the
-// curvature terms, e.g. pi r^2 H for a circular cylinder: (r / R)^2 of the volume).
-double outer_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres);
-// Its second part alone, S r (for a caller that has lateral_volume already).
-double skin_volume(const LateralSurface &membrane, const std::vector<Sphere> &spheres);
+std::vector<Eigen::Vector3d> membrane_loads(const LateralSurface &membrane, std::size_t n_spheres,
+                                            double p);
 
 // The sample's axis: the area-weighted centroid (x, y) of the membrane's facets.
 Eigen::Vector2d membrane_axis(const LateralSurface &membrane);
 
 // Adds to `load` the push on each escaped sphere: p pi r^2 horizontally towards the
 // axis (nothing for a sphere on the axis).
-void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres,
-                      double p, std::vector<Eigen::Vector3d> &load);
+void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres, double p,
+                      std::vector<Eigen::Vector3d> &load);
 
 } // namespace membrane3d
 

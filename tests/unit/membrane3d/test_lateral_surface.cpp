@@ -21,10 +21,11 @@ using shapes::expect_vector_near;
 
 namespace {
 
-constexpr double p = 2.0;          // pressure
+constexpr double p = 2.0; // pressure
 constexpr double round_off = 1e-12;
 
-int count(const LateralSurface &m, Side side) {
+int count(const LateralSurface &m, Side side)
+{
   int n = 0;
   for (Side s : m.side) n += s == side;
   return n;
@@ -32,7 +33,8 @@ int count(const LateralSurface &m, Side side) {
 
 // The sum of the loads on the spheres that `pick` selects.
 Vector3d load_on(const std::vector<Sphere> &s, const LateralSurface &m,
-                 const std::function<bool(const Vector3d &)> &pick) {
+                 const std::function<bool(const Vector3d &)> &pick)
+{
   const auto load = membrane3d::membrane_loads(m, s.size(), p);
   Vector3d sum = Vector3d::Zero();
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -45,7 +47,8 @@ Vector3d load_on(const std::vector<Sphere> &s, const LateralSurface &m,
 // 4 x 3 x 5 simple-cubic block, T = r: face diagonals (gap sqrt 2 - 1) are links,
 // body diagonals (sqrt 3 - 1) are not. The membrane runs through the centres of the
 // four lateral faces, from the lower platen (z = -1/2) to the upper (9/2).
-TEST(LateralSurface, SimpleCubicBlock) {
+TEST(LateralSurface, SimpleCubicBlock)
+{
   const auto s = simple_cubic(4, 3, 5);
   const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
   EXPECT_EQ(count(m, Side::surface), 60 - 2 * 1 * 5);
@@ -74,20 +77,25 @@ namespace {
 
 // The 4 x 3 x 5 block with one more sphere out of its x = 3 face, over the window
 // y in [0, 1], z in [2, 3], at gap g from the window's four spheres.
-std::vector<Sphere> block_with_bump(double g) {
+std::vector<Sphere> block_with_bump(double g)
+{
   auto s = simple_cubic(4, 3, 5);
   s.push_back({Vector3d(3 + std::sqrt((1 + g) * (1 + g) - 0.5), 0.5, 2.5), radius});
   return s;
 }
 
-bool beyond_face(const Vector3d &x) { return x.x() >= 3; }
+bool beyond_face(const Vector3d &x)
+{
+  return x.x() >= 3;
+}
 
 } // namespace
 
 // The bump's four links make a square pyramid on the window: the bump is on the
 // membrane, the window's spheres stay on it, and the volume grows by the pyramid's
 // (base 1, height h) / 3; the face's load is still p x its projected area.
-TEST(LateralSurface, BumpAtGapJustBelowTheTolerance) {
+TEST(LateralSurface, BumpAtGapJustBelowTheTolerance)
+{
   for (double g : {0.0, radius - 1e-9}) {
     const auto s = block_with_bump(g);
     const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
@@ -103,7 +111,8 @@ TEST(LateralSurface, BumpAtGapJustBelowTheTolerance) {
 
 // Just beyond the tolerance the bump has no link: it has escaped, the block is as
 // without it.
-TEST(LateralSurface, BumpAtGapJustAboveTheToleranceHasEscaped) {
+TEST(LateralSurface, BumpAtGapJustAboveTheToleranceHasEscaped)
+{
   const auto s = block_with_bump(radius + 1e-9);
   const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
   EXPECT_EQ(m.side.back(), Side::outside);
@@ -115,15 +124,16 @@ TEST(LateralSurface, BumpAtGapJustAboveTheToleranceHasEscaped) {
 // A sphere far out; a tip on the bump of the last test, linked to the bump only (a
 // dead end: no facet of links holds it); a linked 2 x 2 x 2 cluster away from the
 // block: all outside, the block and its bump as without them.
-TEST(LateralSurface, EscapedSpheresDeadEndAndClusterAreOutside) {
+TEST(LateralSurface, EscapedSpheresDeadEndAndClusterAreOutside)
+{
   auto s = block_with_bump(0);
   const double h = s.back().x.x() - 3;
-  s.push_back({s.back().x + Vector3d(1, 0, 0), radius});  // the tip
+  s.push_back({s.back().x + Vector3d(1, 0, 0), radius}); // the tip
   s.push_back({Vector3d(9, 1, 2.5), radius});            // far out
   for (int k = 0; k < 8; ++k)
     s.push_back({Vector3d(6 + (k & 1), -3 + ((k >> 1) & 1), 1 + ((k >> 2) & 1)), radius});
   const auto m = membrane3d::lateral_surface(s, touching_platens(simple_cubic(4, 3, 5)), radius);
-  EXPECT_EQ(m.side[60], Side::surface);  // the bump
+  EXPECT_EQ(m.side[60], Side::surface); // the bump
   for (std::size_t i = 61; i < s.size(); ++i) EXPECT_EQ(m.side[i], Side::outside) << i;
   EXPECT_EQ(count(m, Side::surface), 51);
   EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 30 + h / 3, round_off);
@@ -132,7 +142,8 @@ TEST(LateralSurface, EscapedSpheresDeadEndAndClusterAreOutside) {
 // A 4 x 3 x 6 block with a shelf x in {4, 5, 6} on its two upper layers (z = 4, 5):
 // the membrane runs under the shelf (its normal -z), so the loads have an axial part
 // p x the underside's area (3 x 2), and the volume is 3 x 2 x 6 + 3 x 2 x 1.5.
-TEST(LateralSurface, OverhangingShelf) {
+TEST(LateralSurface, OverhangingShelf)
+{
   auto s = simple_cubic(4, 3, 6);
   for (int k = 4; k < 6; ++k)
     for (int j = 0; j < 3; ++j)
@@ -142,7 +153,7 @@ TEST(LateralSurface, OverhangingShelf) {
   // x in {3, 4, 5}, y = 1, z = 5
   EXPECT_EQ(count(m, Side::inside), 15);
   EXPECT_EQ(count(m, Side::surface), 90 - 15);
-  EXPECT_EQ(m.side[2 * 12 + 1 * 4 + 3], Side::surface);  // (3, 1, 2): the face below the shelf
+  EXPECT_EQ(m.side[2 * 12 + 1 * 4 + 3], Side::surface); // (3, 1, 2): the face below the shelf
   EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 36 + 9, round_off);
   const auto all = [](const Vector3d &) { return true; };
   expect_vector_near(load_on(s, m, all), Vector3d(0, 0, p * 3 * 2), round_off);
@@ -159,7 +170,8 @@ TEST(LateralSurface, OverhangingShelf) {
 // FCC block m = 2, l = 3 (88 spheres), T = 0.75: the (100) faces' square windows and
 // the windows between the lowest layer and its image in the platen are closed. The
 // membrane is the four faces, the volume (4 h)^2 x H with h = sqrt 2 / 2.
-TEST(LateralSurface, FaceCentredCubicBlock) {
+TEST(LateralSurface, FaceCentredCubicBlock)
+{
   const auto s = face_centred_cubic(2, 3);
   ASSERT_EQ(s.size(), 88u);
   const Platens platens = touching_platens(s);
@@ -177,14 +189,15 @@ TEST(LateralSurface, FaceCentredCubicBlock) {
 // layers at spacing 1 around a central column out of their reach: the membrane is the
 // 12-gon prism through the ring centres, volume 6 R^2 sin 30 deg x H; the column is
 // inside.
-TEST(LateralSurface, CylinderOfRingsHasThePrismVolume) {
+TEST(LateralSurface, CylinderOfRingsHasThePrismVolume)
+{
   const int n = 12, layers = 6;
   const double R = 1 / (2 * std::sin(M_PI / n));
   std::vector<Sphere> s;
   for (int k = 0; k < layers; ++k) {
     for (int i = 0; i < n; ++i)
-      s.push_back({Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k),
-                   radius});
+      s.push_back(
+          {Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k), radius});
     s.push_back({Vector3d(0, 0, k), radius});
   }
   const Platens platens = touching_platens(s);
@@ -193,15 +206,15 @@ TEST(LateralSurface, CylinderOfRingsHasThePrismVolume) {
   for (int k = 0; k < layers; ++k) EXPECT_EQ(m.side[k * (n + 1) + n], Side::inside);
   EXPECT_NEAR(membrane3d::lateral_volume(m.surface),
               n / 2.0 * R * R * std::sin(2 * M_PI / n) * (platens.hi - platens.lo), 1e-12);
-  expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }), Vector3d::Zero(),
-                     1e-12);
+  expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }), Vector3d::Zero(), 1e-12);
 }
 
 // A block lifted off the lower platen by 0.3 (within T = 0.5): the membrane is still
 // sealed to the platen, hanging from the lowest layer down to it, V = 3 x 2 x 5.3 and
 // nothing axial; lifted by 0.6 (beyond T) the flood runs under it: no rim there, and
 // the membrane pushes it up by p x its base.
-TEST(LateralSurface, BlockOffThePlatenKeepsItsRimWithinTheTolerance) {
+TEST(LateralSurface, BlockOffThePlatenKeepsItsRimWithinTheTolerance)
+{
   const auto s = simple_cubic(4, 3, 5);
   Platens platens = touching_platens(s);
   platens.lo -= 0.3;
@@ -219,7 +232,8 @@ TEST(LateralSurface, BlockOffThePlatenKeepsItsRimWithinTheTolerance) {
 }
 
 // The input order changes nothing: the same sides, loads (to round-off) and volume.
-TEST(LateralSurface, InputOrderDoesNotMatter) {
+TEST(LateralSurface, InputOrderDoesNotMatter)
+{
   const auto s = block_with_bump(0.2);
   std::vector<int> order(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) order[i] = static_cast<int>((i * 37) % s.size());
@@ -238,14 +252,16 @@ TEST(LateralSurface, InputOrderDoesNotMatter) {
               round_off);
 }
 
-TEST(LateralSurface, SpheresOutOfReachAreNoPacking) {
+TEST(LateralSurface, SpheresOutOfReachAreNoPacking)
+{
   std::vector<Sphere> s;
   for (int k = 0; k < 27; ++k)
     s.push_back({Vector3d(3 * (k % 3), 3 * (k / 3 % 3), 3 * (k / 9)), radius});
   EXPECT_THROW(membrane3d::lateral_surface(s, {-1, 7}, radius), std::runtime_error);
 }
 
-TEST(LateralSurface, BadInputIsRefused) {
+TEST(LateralSurface, BadInputIsRefused)
+{
   const auto s = simple_cubic(2, 2, 2);
   const Platens platens = touching_platens(s);
   EXPECT_THROW(membrane3d::lateral_surface(s, {1.5, -0.5}, radius), std::invalid_argument);
@@ -265,8 +281,9 @@ TEST(LateralSurface, BadInputIsRefused) {
 // A topology holds while the spheres move: placed on the block stretched by 10 % in x
 // it gives the stretched block's volume; over its members only (the 50 face spheres
 // of the bump-free block and the escaped bump) it gives the same loads.
-TEST(LateralSurface, TopologyPlacedOnMovedSpheresAndOnItsMembers) {
-  const auto s = block_with_bump(radius + 0.1);  // the bump has escaped
+TEST(LateralSurface, TopologyPlacedOnMovedSpheresAndOnItsMembers)
+{
+  const auto s = block_with_bump(radius + 0.1); // the bump has escaped
   const Platens platens = touching_platens(s);
   const auto topology = membrane3d::detect_membrane(s, platens, radius);
   auto stretched = s;
@@ -295,7 +312,8 @@ TEST(LateralSurface, TopologyPlacedOnMovedSpheresAndOnItsMembers) {
 
 // The axis of the 4 x 3 block is (1.5, 1); the escaped bump at y = 0.5 is pushed with
 // p pi r^2 along (1.5 - x, 1 - 0.5), normalised.
-TEST(LateralSurface, EscapedSphereIsPushedTowardsTheAxis) {
+TEST(LateralSurface, EscapedSphereIsPushedTowardsTheAxis)
+{
   const auto s = block_with_bump(radius + 0.1);
   const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
   const Eigen::Vector2d axis = membrane3d::membrane_axis(m);
@@ -311,13 +329,14 @@ TEST(LateralSurface, EscapedSphereIsPushedTowardsTheAxis) {
 // Independent checks (surface_closure.h): the membrane closed by caps at its rims
 // encloses the volume lateral_volume gives, and its winding number is 1 about every
 // sphere the flood put inside and 0 about every escaped one.
-TEST(LateralSurface, CapsAndWindingNumberAgreeWithTheFlood) {
+TEST(LateralSurface, CapsAndWindingNumberAgreeWithTheFlood)
+{
   auto shelf = simple_cubic(4, 3, 6);
   for (int k = 4; k < 6; ++k)
     for (int j = 0; j < 3; ++j)
       for (int i = 4; i < 7; ++i) shelf.push_back({Vector3d(i, j, k), radius});
   auto bumps = block_with_bump(0.3);
-  bumps.push_back({Vector3d(1.5, -0.9, 2.5), radius});  // touching nothing: escaped
+  bumps.push_back({Vector3d(1.5, -0.9, 2.5), radius}); // touching nothing: escaped
   for (const auto &s : {shelf, bumps, face_centred_cubic(2, 3)}) {
     const double tolerance = s.size() == 88 ? 0.75 : radius;
     const auto m = membrane3d::lateral_surface(s, touching_platens(s), tolerance);
@@ -332,21 +351,62 @@ TEST(LateralSurface, CapsAndWindingNumberAgreeWithTheFlood) {
   }
 }
 
-// To the outer faces: the 4 x 3 x 5 block's 30 through the centres plus its lateral
-// area 2 (3 + 2) x 5 = 50 times the radius (1/2, and 0.6 for the same centres).
-TEST(LateralSurface, OuterVolumeAddsAreaTimesRadius) {
+// On the outer faces: the 4 x 3 x 5 block's faces move out by r = 1/2, its vertical
+// edges by r along both normals, so the membrane is the block's outer box 4 x 3 x 5
+// (V = 60) and each face's spheres carry p x its outer area, as a rigid wall's would:
+// p x 3 x 5 on the face x = 0, p x 4 x 5 on the face y = 0 (through the centres:
+// p x 2 x 5 and p x 3 x 5).
+TEST(LateralSurface, OuterFacesOfABlockAreItsBox)
+{
   const auto s = simple_cubic(4, 3, 5);
-  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
-  EXPECT_NEAR(membrane3d::outer_volume(m, s), 30 + 50 * radius, 1e-12);
-  auto heavy = s;
-  for (Sphere &x : heavy) x.r = 0.6;  // overlapping: the same membrane, a thicker skin
-  EXPECT_NEAR(membrane3d::outer_volume(m, heavy), 30 + 50 * 0.6, 1e-12);
+  const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius,
+                                             membrane3d::Vertices::outer_faces);
+  EXPECT_EQ(count(m, Side::surface), 50);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface), 4 * 3 * 5, 1e-12);
+  EXPECT_NEAR(load_on(s, m, [](const Vector3d &x) { return x.x() == 0; }).x(), p * 3 * 5, 1e-12);
+  EXPECT_NEAR(load_on(s, m, [](const Vector3d &x) { return x.y() == 0; }).y(), p * 4 * 5, 1e-12);
+  expect_vector_near(load_on(s, m, [](const Vector3d &) { return true; }), Vector3d::Zero(), 1e-12);
+  const auto o = membrane3d::outer_face_offsets(
+      membrane3d::detect_membrane(s, touching_platens(s), radius), s, touching_platens(s));
+  expect_vector_near(o[0], Vector3d(-radius, -radius, 0), 1e-12); // a corner column
+  expect_vector_near(o[1], Vector3d(0, -radius, 0), 1e-12);       // the face y = 0
+  expect_vector_near(o[1 * 4 + 1], Vector3d::Zero(), 0);          // inside: none
+}
+
+// On the outer faces the 12-gon prism of rings moves out to the polygon whose sides
+// are r from the centres' sides: circumradius R + r / cos 15 deg.
+TEST(LateralSurface, OuterFacesOfRingsAreTheOffsetPrism)
+{
+  const int n = 12, layers = 4;
+  const double R = 1 / (2 * std::sin(M_PI / n));
+  std::vector<Sphere> s;
+  for (int k = 0; k < layers; ++k) {
+    for (int i = 0; i < n; ++i)
+      s.push_back(
+          {Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k), radius});
+    s.push_back({Vector3d(0, 0, k), radius});
+  }
+  const Platens platens = touching_platens(s);
+  const auto m = membrane3d::lateral_surface(s, platens, radius, membrane3d::Vertices::outer_faces);
+  const double outer = R + radius / std::cos(M_PI / n);
+  EXPECT_NEAR(membrane3d::lateral_volume(m.surface),
+              n / 2.0 * outer * outer * std::sin(2 * M_PI / n) * (platens.hi - platens.lo), 1e-12);
+}
+
+// The offset is at most 2 r: a sphere alone on a spike of facets does not fly off.
+TEST(LateralSurface, OuterFaceOffsetIsBounded)
+{
+  const auto s = block_with_bump(0.3);
+  const auto topology = membrane3d::detect_membrane(s, touching_platens(s), radius);
+  const auto o = membrane3d::outer_face_offsets(topology, s, touching_platens(s));
+  for (std::size_t i = 0; i < s.size(); ++i) EXPECT_LE(o[i].norm(), 2 * s[i].r + 1e-15);
 }
 
 // The VTK frame of the block with an escaped bump: the membrane's corners then the
 // escapee as points, its facets as polys, the escapee as a vertex; the loads in the
 // file sum to -p x the vector area (zero) plus the escapee's push p pi r^2.
-TEST(LateralSurface, VtkFrameHoldsTheMembraneAndTheEscapee) {
+TEST(LateralSurface, VtkFrameHoldsTheMembraneAndTheEscapee)
+{
   const auto s = block_with_bump(radius + 0.1);
   const auto m = membrane3d::lateral_surface(s, touching_platens(s), radius);
   const std::string frame = membrane3d::vtk_frame(m, s, p);
