@@ -42,6 +42,20 @@ Vector3d load_on(const std::vector<Sphere> &s, const LateralSurface &m,
   return sum;
 }
 
+// `layers` rings of n spheres of circumradius R at spacing 1 in z, each around a
+// central sphere (n + 1 per layer, the central one last)
+std::vector<Sphere> rings(int n, int layers, double R)
+{
+  std::vector<Sphere> s;
+  for (int k = 0; k < layers; ++k) {
+    for (int i = 0; i < n; ++i)
+      s.push_back(
+          {Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k), radius});
+    s.push_back({Vector3d(0, 0, k), radius});
+  }
+  return s;
+}
+
 } // namespace
 
 // 4 x 3 x 5 simple-cubic block, T = r: face diagonals (gap sqrt 2 - 1) are links,
@@ -193,13 +207,7 @@ TEST(LateralSurface, CylinderOfRingsHasThePrismVolume)
 {
   const int n = 12, layers = 6;
   const double R = 1 / (2 * std::sin(M_PI / n));
-  std::vector<Sphere> s;
-  for (int k = 0; k < layers; ++k) {
-    for (int i = 0; i < n; ++i)
-      s.push_back(
-          {Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k), radius});
-    s.push_back({Vector3d(0, 0, k), radius});
-  }
+  const std::vector<Sphere> s = rings(n, layers, R);
   const Platens platens = touching_platens(s);
   const auto m = membrane3d::lateral_surface(s, platens, radius);
   EXPECT_EQ(count(m, Side::surface), n * layers);
@@ -379,13 +387,7 @@ TEST(LateralSurface, OuterFacesOfRingsAreTheOffsetPrism)
 {
   const int n = 12, layers = 4;
   const double R = 1 / (2 * std::sin(M_PI / n));
-  std::vector<Sphere> s;
-  for (int k = 0; k < layers; ++k) {
-    for (int i = 0; i < n; ++i)
-      s.push_back(
-          {Vector3d(R * std::cos(2 * M_PI * i / n), R * std::sin(2 * M_PI * i / n), k), radius});
-    s.push_back({Vector3d(0, 0, k), radius});
-  }
+  const std::vector<Sphere> s = rings(n, layers, R);
   const Platens platens = touching_platens(s);
   const auto m = membrane3d::lateral_surface(s, platens, radius, membrane3d::Vertices::outer_faces);
   const double outer = R + radius / std::cos(M_PI / n);
