@@ -278,6 +278,10 @@ std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology
     o *= spheres[i].r;
     const double longest = kLongestOffset * spheres[i].r;
     if (o.norm() > longest) o *= longest / o.norm();
+    // Never past a platen plane: the vertex's image would come inside, and the facets
+    // of images only, beyond the platen, are not part of the membrane (it would open).
+    const double z = spheres[i].x.z();
+    o.z() = std::min(std::max(o.z(), platens.lo - z), platens.hi - z);
     offset[i] = o;
   }
   return offset;

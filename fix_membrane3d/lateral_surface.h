@@ -17,7 +17,8 @@
 // faces, where the latex lies: each centre moved out by o_i, the least-squares
 // solution of o . n_f = r_i over the facets f on sphere i (area-weighted), so that
 // every facet plane of a flat face moves out by r, an edge between two faces by r
-// along both normals and a cube's corner to its corner (|o_i| at most 2 r_i). On the
+// along both normals and a cube's corner to its corner (|o_i| at most 2 r_i, and never
+// past a platen plane, beyond which the facets of images only are left out). On the
 // outer faces the loads sum to p times the sample's cross-section to its outer
 // faces, as a rigid wall's would: through the centres a box of side W gets only
 // (W - 2 r) / W of it, a cylinder of radius R (R - r) / R (a clipped facet has

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
@@ -402,6 +403,40 @@ TEST(LateralSurface, OuterFaceOffsetIsBounded)
   const auto topology = membrane3d::detect_membrane(s, touching_platens(s), radius);
   const auto o = membrane3d::outer_face_offsets(topology, s, touching_platens(s));
   for (std::size_t i = 0; i < s.size(); ++i) EXPECT_LE(o[i].norm(), 2 * s[i].r + 1e-15);
+}
+
+// A sheared sample's spheres near its upper platen (data/cuboid_near_platen.txt, from
+// a run of examples/triaxial): some offsets point up past the platen plane. Were a
+// vertex moved past it, its image would come inside and the facets of images only
+// (left out of the membrane) would leave it open; kept in the plane, the membrane is
+// closed by its caps: no lateral load, the caps' volume its own.
+TEST(LateralSurface, OuterFacesStayBetweenThePlatens)
+{
+  std::ifstream in(MEMBRANE3D_TEST_DATA "/cuboid_near_platen.txt");
+  ASSERT_TRUE(in.good());
+  std::vector<Sphere> s;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    Sphere sphere;
+    row >> sphere.x.x() >> sphere.x.y() >> sphere.x.z() >> sphere.r;
+    s.push_back(sphere);
+  }
+  ASSERT_EQ(s.size(), 198u);
+  double diameter = 0;
+  for (const Sphere &x : s) diameter += 2 * x.r / s.size();
+  const Platens platens{0.0, 0.019190253904679787};
+  const auto topology = membrane3d::detect_membrane(s, platens, 0.7 * diameter);
+  const auto o = membrane3d::outer_face_offsets(topology, s, platens);
+  int in_the_plane = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) in_the_plane += s[i].x.z() + o[i].z() == platens.hi;
+  EXPECT_GT(in_the_plane, 0);
+  const auto m =
+      membrane3d::place_membrane(topology, s, platens, membrane3d::Vertices::outer_faces);
+  const Vector3d total = load_on(s, m, [](const Vector3d &) { return true; });
+  EXPECT_LT(total.head<2>().norm(), 1e-12 * p * 1e-4);
+  EXPECT_NEAR(membrane3d::enclosed_volume(membrane3d::close_with_caps(m.surface)),
+              membrane3d::lateral_volume(m.surface), 1e-18);
 }
 
 // The VTK frame of the block with an escaped bump: the membrane's corners then the
