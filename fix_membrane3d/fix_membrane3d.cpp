@@ -40,6 +40,10 @@ const char *const PREFIX = "Fix membrane3d: "; // every message starts so (doc/m
 // the compressed triaxial sample (0.6), with a margin (bench/membrane3d_tolerance.sh).
 const double DEFAULT_TOLERANCE = 0.7;
 
+// The lateral net load of a closed membrane, relative to the sum of the loads' sizes:
+// zero but for the round-off of summing them.
+const double CLOSURE_ROUND_OFF = 1e-9;
+
 const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every, vtk";
 const char *const USE_PRESSURE =
     "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
@@ -267,7 +271,19 @@ void FixMembrane3d::place_and_apply()
   std::vector<Eigen::Vector3d> load =
       membrane3d::membrane_loads(membrane, members.spheres.size(), pressure);
   Eigen::Vector3d net = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d &f : load) net += f;
+  double magnitude = 0.0;
+  for (const Eigen::Vector3d &f : load) {
+    net += f;
+    magnitude += f.norm();
+  }
+  // a closed membrane with its rims in the platen planes has no lateral net load: else
+  // some loads are wrong, and the run must not go on with them
+  if (net.head<2>().norm() > CLOSURE_ROUND_OFF * magnitude)
+    fail(("the membrane's loads have a lateral net force of " + number_text(net.head<2>().norm()) +
+          " N (of " + number_text(magnitude) + " N in all) at step " +
+          std::to_string(update->ntimestep) + ": the membrane is not closed")
+             .c_str(),
+         "this is a fault of fix membrane3d; please report it with the input script");
   membrane3d::add_escape_loads(membrane, members.spheres, pressure, load);
 
   double **f = atom->f;
