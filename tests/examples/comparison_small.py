@@ -1,0 +1,79 @@
+"""The rigid-boundary comparison (examples/triaxial/run_comparison.sh --quick's scripts)
+on two small cuboid samples (W = 16 mm, about 400 spheres):
+
+  prepared: the platen and the four side walls each within 2 % of p;
+  sheared with the side walls: the walls' mean stress within 3 % of p after the hold,
+    q rising above 0.3 p;
+  sheared with the membrane: the platen within 10 % of p after the hold, the
+    membrane's frames between the platens with lateral loads summing to zero, q
+    rising above 0.3 p;
+  compare_boundaries.py: the table has a row per measure with both boundaries and
+    the paired difference, and the figure is written.
+
+Usage: comparison_small.py EXE NP"""
+import os
+import re
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from example_run import ROOT, Checks, run, table  # noqa: E402
+from triaxial_small import check_frames, vtk_frames  # noqa: E402
+
+EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
+P = 1e5
+SEEDS = ("86028121", "104395301")
+SMALL = ["-var", "W", "0.016"]
+
+
+def liggghts(exe, np_, args, log):
+    return run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe] + args,
+               log, cwd=EXAMPLE)
+
+
+def main():
+    exe, np_ = sys.argv[1], sys.argv[2]
+    check = Checks()
+    with tempfile.TemporaryDirectory() as tmp:
+        for seed in SEEDS:
+            sample = os.path.join(tmp, "cuboid_" + seed)
+            log = liggghts(exe, np_, ["-in", "in.cuboid_prepare", "-var", "seed", seed, "-var", "out",
+                                      sample, "-var", "hfill", "0.06", "-var", "nsettle", "8000",
+                                      "-var", "ncompress", "12000"] + SMALL, sample + ".log")
+            got = re.search(r"CUBOID compressed: sigma1 = (\S+) Pa, sides (\S+) (\S+) (\S+) (\S+) Pa "
+                            r"at H = (\S+) m", log)
+            stresses = [float(got.group(k)) for k in range(1, 6)]
+            check(max(abs(s / P - 1) for s in stresses) < 0.02,
+                  "seed %s prepared: platen and side walls at %s Pa" %
+                  (seed, " ".join("%.0f" % s for s in stresses)))
+            height = float(got.group(6))
+            for boundary in ("walls", "membrane"):
+                out = os.path.join(tmp, "%s_%s" % (boundary, seed))
+                log = liggghts(exe, np_, ["-in", "in.cuboid_shear", "-var", "sample", sample,
+                                          "-var", "boundary", boundary, "-var", "out", out,
+                                          "-var", "nhold", "2000", "-var", "vtkevery", "2000"]
+                               + SMALL, out + ".log")
+                held = re.search(r"CUBOID held \(%s\): sigma1 = (\S+) Pa, sigma3 = (\S+) Pa" %
+                                 boundary, log)
+                sigma1, sigma3 = float(held.group(1)), float(held.group(2))
+                if boundary == "walls":
+                    check(abs(sigma3 / P - 1) < 0.03, "seed %s walls held: sigma3 = %.0f Pa" %
+                          (seed, sigma3))
+                else:
+                    check(abs(sigma1 / P - 1) < 0.10, "seed %s membrane held: sigma1 = %.0f Pa" %
+                          (seed, sigma1))
+                    check_frames(check, vtk_frames(out + "_membrane.pvd"), height)
+                q = table(out + ".txt")["q[Pa]"]
+                check(max(q) > 0.3 * P, "seed %s %s: q up to %.0f Pa" % (seed, boundary, max(q)))
+        summary = run(["/usr/bin/python3", "compare_boundaries.py", tmp] + list(SEEDS),
+                      os.path.join(tmp, "compare.log"), cwd=EXAMPLE)
+        rows = [l for l in summary.splitlines() if l.startswith("| ") and "measure" not in l]
+        check(len(rows) == 9 and all(l.count("±") == 3 for l in rows),
+              "comparison table: %d rows with walls, membrane and their difference" % len(rows))
+        check(os.path.getsize(os.path.join(tmp, "comparison.png")) > 10000, "comparison figure")
+    if check.failures:
+        sys.exit("FAIL: %d checks" % len(check.failures))
+
+
+if __name__ == "__main__":
+    main()
