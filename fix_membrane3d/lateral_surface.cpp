@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 namespace membrane3d {
 
@@ -241,6 +242,40 @@ void check_placement(const MembraneTopology &topology, const std::vector<Sphere>
 constexpr double kUnconstrained = 1e-3;
 constexpr double kLongestOffset = 2.0; // in radii; a cube's corner is sqrt(3)
 
+// The eigenvalues of a symmetric positive semi-definite 3 x 3 matrix in closed form
+// (Smith 1961), smallest and largest: accurate to round-off of the largest.
+std::pair<double, double> eigenvalue_range(const Eigen::Matrix3d &m)
+{
+  const double q = m.trace() / 3;
+  const Eigen::Matrix3d shifted = m - q * Eigen::Matrix3d::Identity();
+  const double p = std::sqrt(shifted.squaredNorm() / 6);
+  if (p == 0) return {q, q};
+  const double half_det = std::clamp((shifted / p).determinant() / 2, -1.0, 1.0);
+  const double phi = std::acos(half_det) / 3;
+  return {q + 2 * p * std::cos(phi + 2 * M_PI / 3), q + 2 * p * std::cos(phi)};
+}
+
+// The least-squares solution of o . n_f = 1 over the facets, M o = b with M = sum a n n^T
+// and b = sum a n, without the directions M hardly constrains (eigenvalue at most
+// kUnconstrained of the largest). Most membrane spheres have none: a Cholesky solve
+// (a 3 x 3 per membrane sphere and step); the others, on flat faces and straight edges,
+// take the eigenvectors.
+Eigen::Vector3d least_squares_offset(const Eigen::Matrix3d &m, const Eigen::Vector3d &b)
+{
+  const std::pair<double, double> range = eigenvalue_range(m);
+  if (range.first > 2 * kUnconstrained * range.second) return m.llt().solve(b);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(m);
+  const double largest = eigen.eigenvalues().maxCoeff();
+  Eigen::Vector3d o = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const double lambda = eigen.eigenvalues()(k);
+    if (lambda <= kUnconstrained * largest) continue;
+    const Eigen::Vector3d v = eigen.eigenvectors().col(k);
+    o += (v.dot(b) / lambda) * v;
+  }
+  return o;
+}
+
 } // namespace
 
 std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology,
@@ -266,16 +301,7 @@ std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology
   std::vector<Eigen::Vector3d> offset(spheres.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (sum[i].isZero(0)) continue;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normals[i]);
-    const double largest = eigen.eigenvalues().maxCoeff();
-    Eigen::Vector3d o = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k) {
-      const double lambda = eigen.eigenvalues()(k);
-      if (lambda <= kUnconstrained * largest) continue;
-      const Eigen::Vector3d v = eigen.eigenvectors().col(k);
-      o += (v.dot(sum[i]) / lambda) * v;
-    }
-    o *= spheres[i].r;
+    Eigen::Vector3d o = least_squares_offset(normals[i], sum[i]) * spheres[i].r;
     const double longest = kLongestOffset * spheres[i].r;
     if (o.norm() > longest) o *= longest / o.norm();
     // Never past a platen plane: the vertex's image would come inside, and the facets
