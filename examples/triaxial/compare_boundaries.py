@@ -6,7 +6,8 @@ Writes OUT/comparison.md (a table: mean and sample-to-sample standard deviation 
 the seeds for each boundary, and the paired difference membrane - walls with its
 standard deviation over the seeds) and OUT/comparison.png (q/p, volumetric strain,
 fabric and normal-force anisotropy and Z_m against the axial strain for every run,
-and the membrane's bulged shape at the start and end of one shear).
+and the membrane's profile, its half-width against z, at the start and end of one
+shear).
 
 A difference is called a finding only when it exceeds both the sample-to-sample
 scatter (the larger standard deviation of the two boundaries) and twice the
@@ -87,6 +88,21 @@ def polydata_points(path):
     return np.array(block.split(), dtype=float).reshape(-1, 3)
 
 
+def half_width_profile(points, bin_width=0.002):
+    """(z, half-width in x) of the membrane's corners in the slice through the axis
+    |y - y_mid| < width / 6, in bins of z: half the x extent of each bin."""
+    y_mid = 0.5 * (points[:, 1].max() + points[:, 1].min())
+    slab = points[np.abs(points[:, 1] - y_mid) < np.ptp(points[:, 1]) / 6]
+    edges = np.arange(slab[:, 2].min(), slab[:, 2].max() + bin_width, bin_width)
+    z, half = [], []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        x = slab[(slab[:, 2] >= lo) & (slab[:, 2] < hi), 0]
+        if len(x) >= 2:
+            z.append(0.5 * (lo + hi))
+            half.append(0.5 * np.ptp(x))
+    return np.array(z), np.array(half)
+
+
 def membrane_frames(out, seed):
     pvd = os.path.join(out, "membrane_%s_membrane.pvd" % seed)
     if not os.path.exists(pvd):
@@ -118,16 +134,15 @@ def plot(runs, seeds, out, png):
     frames = membrane_frames(out, seeds[0])
     shape = ax[1, 2]
     if frames:
-        for (step, path), colour, label in ((frames[0], "0.6", "start of the shear"),
+        for (step, path), colour, label in ((frames[0], "0.5", "start of the shear"),
                                             (frames[-1], "tab:red", "end")):
-            x = polydata_points(path)
-            width = np.ptp(x[:, 1])
-            mid = np.abs(x[:, 1] - np.median(x[:, 1])) < width / 6
-            shape.plot(1000 * x[mid, 0], 1000 * x[mid, 2], ".", ms=3, color=colour,
+            z, half_width = half_width_profile(polydata_points(path))
+            shape.plot(1000 * half_width, 1000 * z, "-o", ms=3, color=colour,
                        label="%s (step %d)" % (label, step))
-        shape.set(xlabel="x [mm]", ylabel="z [mm]", aspect="equal",
-                  title="membrane (outer faces), the slice |y| < W/6, seed %s" % seeds[0])
-        shape.legend(loc="lower center", fontsize=8)
+        shape.set(xlabel="half-width (x) of the membrane [mm]", ylabel="z [mm]",
+                  title="bulging: the membrane's profile, seed %s" % seeds[0])
+        shape.grid(alpha=0.3)
+        shape.legend(fontsize=8)
     else:
         shape.set_axis_off()
         shape.text(0.5, 0.5, "no membrane frames (vtkevery 0)", ha="center", transform=shape.transAxes)
