@@ -22,6 +22,7 @@
 #include "update.h"
 
 #include "contact_scales.h"
+#include "frictionless_type.h"
 #include "membrane_checks.h"
 #include "membrane_output.h"
 #include "membrane_record.h"
@@ -149,7 +150,7 @@ void FixMembrane2d::init()
   pressure_in.init(lmp, PREFIX, "pressure");
   ylo_in.init(lmp, PREFIX, "ylo");
   yhi_in.init(lmp, PREFIX, "yhi");
-  check_frictionless_type(lmp, PREFIX, definition.frictionless_type, style);
+  check_frictionless_type(lmp, PREFIX, definition.frictionless_type, style, "chain disks");
   check_other_membranes(lmp, PREFIX, this, gather);
 
   // D50 sets the default band width and gap tolerance; with the density, the inertial number

@@ -8,7 +8,6 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
-#include "fix_property_global.h"
 #include "modify.h"
 #include "update.h"
 
@@ -42,30 +41,6 @@ void check_platens_order(LAMMPS *lmp, const char *prefix, const ScalarInput &ylo
                                    " at step " + std::to_string(lmp->update->ntimestep) +
                                    "; ylo is the bottom platen surface, yhi the top one")
                    .c_str());
-}
-
-void check_frictionless_type(LAMMPS *lmp, const char *prefix, int type, const char *style)
-{
-  if (type <= 0) {
-    if (lmp->comm->me == 0)
-      lmp->error->warning(FLERR, (std::string(prefix) +
-                                  "no 'frictionless' type given: chain disks keep their friction")
-                                     .c_str());
-    return;
-  }
-  const int ntypes = lmp->atom->ntypes;
-  FixPropertyGlobal *mu = static_cast<FixPropertyGlobal *>(
-      lmp->modify->find_fix_property("coefficientFriction", "property/global", "peratomtypepair",
-                                     ntypes, ntypes, const_cast<char *>(style)));
-  for (int j = 1; j <= ntypes; j++) {
-    const double value = mu->compute_array(type - 1, j - 1);
-    if (value != 0.0)
-      lmp->error->all(FLERR,
-                      (std::string(prefix) + "coefficientFriction of the frictionless type " +
-                       std::to_string(type) + " with type " + std::to_string(j) + " is " +
-                       std::to_string(value) + ", it must be 0")
-                          .c_str());
-  }
 }
 
 // two membranes on one disk would apply the pressure twice and fight over its type

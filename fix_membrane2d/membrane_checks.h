@@ -19,10 +19,6 @@ void check_atom_setup(LAMMPS_NS::LAMMPS *lmp, const char *prefix);
 // The platens (evaluated at this step) are in order.
 void check_platens_order(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const ScalarInput &ylo_in,
                          double ylo, double yhi);
-// The frictionless type has a zero coefficientFriction with every type
-// (warns when there is none: chain disks keep their friction).
-void check_frictionless_type(LAMMPS_NS::LAMMPS *lmp, const char *prefix, int type,
-                             const char *style);
 // No other fix of the same style shares a disk with `self`.
 void check_other_membranes(LAMMPS_NS::LAMMPS *lmp, const char *prefix, LAMMPS_NS::Fix *self,
                            MembraneGather &gather);

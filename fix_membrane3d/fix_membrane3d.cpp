@@ -23,9 +23,9 @@
 #include "modify.h"
 #include "update.h"
 
+#include "frictionless_type.h"
 #include "membrane3d_checks.h"
 #include "membrane3d_record.h"
-#include "membrane3d_vtk.h"
 #include "style_args.h"
 
 using namespace LAMMPS_NS;
@@ -44,12 +44,14 @@ const double DEFAULT_TOLERANCE = 0.7;
 // zero but for the round-off of summing them.
 const double CLOSURE_ROUND_OFF = 1e-9;
 
-const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every, vtk";
+const char *const KEYWORDS = "pressure, zlo, zhi, tolerance, every, frictionless, vtk";
 const char *const USE_PRESSURE =
     "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
 const char *const USE_ZLO = "zlo Z: the lower platen surface (length), a number or v_name";
 const char *const USE_ZHI = "zhi Z: the upper platen surface (length), a number or v_name";
 const char *const USE_EVERY = "every N: find the membrane again every N >= 1 steps";
+const char *const USE_FRICTIONLESS =
+    "frictionless T: the atom type membrane spheres take (its friction with every type 0)";
 const char *const USE_VTK = "vtk N FILE: write the membrane every N >= 1 steps to FILE_<step>.vtp, "
                             "collected in FILE.pvd";
 const std::string USE_TOLERANCE =
@@ -60,7 +62,8 @@ const std::string USE_TOLERANCE =
 
 /* ---------------------------------------------------------------------- */
 
-FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg) : Fix(lammps, narg, arg)
+FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
+  : Fix(lammps, narg, arg), frames(lammps), types(lammps)
 {
   if (domain->dimension != 3) fail("requires dimension 3", "for 2D samples use fix membrane2d");
   if (!atom->radius_flag) fail("requires atom style sphere", "use atom_style granular");
@@ -86,8 +89,11 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg) : Fix(lammps,
       tolerance_given = args.non_negative(USE_TOLERANCE);
     } else if (key == "every") {
       every = static_cast<int>(args.integer(1, 1000000000L, USE_EVERY));
+    } else if (key == "frictionless") {
+      types.set_type(static_cast<int>(args.integer(1, atom->ntypes, USE_FRICTIONLESS)));
     } else if (key == "vtk") {
-      read_vtk(args);
+      frames.read(args, PREFIX, USE_VTK,
+                  {"pressure", "zlo", "zhi", "tolerance", "every", "frictionless", "vtk"});
     } else {
       args.unknown(KEYWORDS);
     }
@@ -101,43 +107,23 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg) : Fix(lammps,
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
+  if (types.type() > 0) {
+    restart_peratom = 1; // only to give membrane spheres their frictionless type back
+    atom->add_callback(1);
+  }
   std::fill(output, output + OUTPUT_SIZE, 0.0);
 }
 
-void FixMembrane3d::read_vtk(StyleArgs &args)
+FixMembrane3d::~FixMembrane3d()
 {
-  vtk_every = args.integer(1, 1000000000L, USE_VTK);
-  const std::string file = args.value(USE_VTK);
-  if (file.empty()) args.bad("the file name is empty", USE_VTK);
-  for (const char *k : {"pressure", "zlo", "zhi", "tolerance", "every", "vtk"})
-    if (file == k) args.bad("the file name is the keyword '" + file + "'", USE_VTK);
-  vtk.name(file);
-  char reason[256] = "";
-  if (comm->me == 0)
-    std::snprintf(reason, sizeof(reason), "%s", vtk.start(update->ntimestep).c_str());
-  MPI_Bcast(reason, sizeof(reason), MPI_CHAR, 0, world);
-  if (reason[0])
-    error->all(FLERR, keyword_message(PREFIX, "vtk", vtk.pvd(),
-                                      std::string("cannot open the file for writing (") + reason +
-                                          "); check that its folder exists and is writable")
-                          .c_str());
-}
-
-// rank 0 holds the whole membrane
-void FixMembrane3d::write_frame(const membrane3d::LateralSurface &membrane)
-{
-  if (vtk_every == 0 || update->ntimestep % vtk_every != 0 || comm->me != 0) return;
-  const std::string why =
-      vtk.add(update->ntimestep, membrane3d::vtk_frame(membrane, members.spheres, pressure));
-  if (!why.empty())
-    error->one(FLERR, keyword_message(PREFIX, "vtk", vtk.frame_path(update->ntimestep),
-                                      "cannot write the frame (" + why + ")")
-                          .c_str());
+  // after 'unfix' the membrane spheres are ordinary spheres again, with their friction
+  if (atom && atom->type) types.restore();
+  if (atom && types.type() > 0) atom->delete_callback(id, 1);
 }
 
 int FixMembrane3d::setmask()
 {
-  return POST_FORCE;
+  return PRE_FORCE | POST_FORCE;
 }
 
 [[noreturn]] void FixMembrane3d::fail(const char *what, const char *advice)
@@ -163,6 +149,7 @@ void FixMembrane3d::init()
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   if (sums[1] == 0.0) fail("the fix group has no atoms", "give it the sample's spheres");
   check_other_membranes(lmp, PREFIX, this);
+  check_frictionless_type(lmp, PREFIX, types.type(), style, "membrane spheres");
   tolerance = tolerance_given >= 0.0 ? tolerance_given : DEFAULT_TOLERANCE * sums[0] / sums[1];
 }
 
@@ -183,15 +170,27 @@ void FixMembrane3d::evaluate_inputs()
                           .c_str());
 }
 
+void FixMembrane3d::setup_pre_force(int vflag)
+{
+  pre_force(vflag);
+}
+
 void FixMembrane3d::setup(int vflag)
 {
   warned_rim = false;
   post_force(vflag);
 }
 
+// end of a run: every sphere gets its own type back (the next run, a write_data, an
+// unfix or a run without this fix see the true sample)
+void FixMembrane3d::post_run()
+{
+  types.restore();
+}
+
 /* ---------------------------------------------------------------------- */
 
-void FixMembrane3d::post_force(int)
+void FixMembrane3d::pre_force(int)
 {
   evaluate_inputs();
   bool due = member_tags.empty() || update->ntimestep - last_detection >= every;
@@ -204,30 +203,37 @@ void FixMembrane3d::post_force(int)
   // the unforeseen)
   int due_any = due ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &due_any, 1, MPI_INT, MPI_MAX, world);
-  if (due_any) detect();
-  place_and_apply();
+  if (due_any)
+    detect();
+  else if (!types.applied())
+    wear_types(members); // a run's start, after a restart write
 }
 
-// Names the atom (by ID) whose centre is not strictly between the platens.
-void FixMembrane3d::check_between_platens(const GatheredSpheres &g)
+void FixMembrane3d::post_force(int)
 {
-  for (std::size_t k = 0; k < g.spheres.size(); k++) {
-    const double z = g.spheres[k].x.z();
-    if (z > platens.lo && z < platens.hi) continue;
-    error->all(FLERR, (std::string(PREFIX) + "atom " + std::to_string(g.tags[k]) + " at z = " +
-                       number_text(z) + " is not between zlo = " + number_text(platens.lo) +
-                       " and zhi = " + number_text(platens.hi) + " at step " +
-                       std::to_string(update->ntimestep) +
-                       "; the platens must enclose every sphere centre of the group")
-                          .c_str());
-  }
+  place_and_apply(); // the positions gathered in pre_force: they do not move in between
+}
+
+// The spheres on the membrane's facets wear the frictionless type, the others their own.
+void FixMembrane3d::wear_types(const GatheredSpheres &g)
+{
+  if (types.type() <= 0) return;
+  std::vector<int> on_tags, on_types;
+  for (std::size_t k = 0; k < member_tags.size(); k++)
+    if (topology.side[k] == membrane3d::Side::surface) {
+      const auto at = std::lower_bound(g.tags.begin(), g.tags.end(), member_tags[k]);
+      if (at == g.tags.end() || *at != member_tags[k]) continue;
+      on_tags.push_back(member_tags[k]);
+      on_types.push_back(g.types[at - g.tags.begin()]);
+    }
+  types.change(on_tags, on_types);
 }
 
 void FixMembrane3d::detect()
 {
   GatheredSpheres all;
   gather_group(lmp, groupbit, all);
-  check_between_platens(all);
+  check_between_platens(lmp, PREFIX, all, platens);
   std::vector<int> index;
   try {
     topology = membrane3d::members_only(
@@ -243,6 +249,9 @@ void FixMembrane3d::detect()
     members.spheres.push_back(all.spheres[k]);
   }
   members.tags = member_tags;
+  members.types.clear();
+  for (int k : index) members.types.push_back(all.types[k]);
+  wear_types(all);
   last_detection = update->ntimestep;
   detections += 1.0;
   check_ranks_agree(lmp, PREFIX, member_tags, topology.facets.size());
@@ -250,7 +259,7 @@ void FixMembrane3d::detect()
 
 void FixMembrane3d::place_and_apply()
 {
-  check_between_platens(members);
+  check_between_platens(lmp, PREFIX, members, platens);
   membrane3d::LateralSurface membrane;
   try {
     membrane = membrane3d::place_membrane(topology, members.spheres, platens,
@@ -308,7 +317,7 @@ void FixMembrane3d::place_and_apply()
   const double outer = membrane3d::lateral_volume(membrane.surface);
   output[OUTER_VOLUME] = outer;
   output[OUTER_RADIUS] = membrane3d::equivalent_radius(outer, platens.hi - platens.lo);
-  write_frame(membrane);
+  frames.write(PREFIX, membrane, members.spheres, pressure);
 }
 
 // The membrane through the centres, placed on this step's spheres only for its volume.
@@ -328,6 +337,7 @@ double FixMembrane3d::compute_vector(int n)
 
 void FixMembrane3d::write_restart(FILE *fp)
 {
+  types.restore_for_restart();
   membrane3d::Membrane3dState state;
   state.tolerance_given = tolerance_given;
   state.every = every;
@@ -365,6 +375,13 @@ void FixMembrane3d::restart(char *raw)
   last_detection = static_cast<bigint>(state.last_detection);
   member_tags = state.member_tags;
   topology = state.topology;
+}
+
+int FixMembrane3d::pack_restart(int i, double *buf)
+{
+  types.packed(i); // called after LIGGGHTS packed atom i with its own type
+  buf[0] = 1;
+  return 1;
 }
 
 double FixMembrane3d::memory_usage()

@@ -26,9 +26,10 @@ FixStyle(membrane3d,FixMembrane3d)
 
 #include "fix.h"
 #include "lateral_surface.h"
+#include "membrane3d_frames.h"
 #include "membrane3d_gather.h"
+#include "membrane3d_types.h"
 #include "scalar_input.h"
-#include "vtk_series.h"
 
 namespace LAMMPS_NS {
 
@@ -50,27 +51,41 @@ class FixMembrane3d : public Fix {
   };
 
   FixMembrane3d(class LAMMPS *, int, char **);
+  ~FixMembrane3d();
   int setmask();
   void init();
+  void setup_pre_force(int);
   void setup(int);
+  // the detection before the pair forces (a sphere that joins the membrane is
+  // frictionless in that very step), the loads after them
+  void pre_force(int);
   void post_force(int);
+  void post_run();
+  // the frictionless type, so that the pair style sizes its tables for it
+  int min_type() { return types.type(); }
+  int max_type() { return types.type(); }
   double compute_vector(int n);
   // restart: the last detection (its topology over atom IDs, its step) and the
   // counter, so that a run continued from the file gives the output of one
   // straight through
   void write_restart(FILE *);
   void restart(char *);
+  // with frictionless: the atoms are written with their own types (membrane3d_types.h)
+  int pack_restart(int, double *);
+  void unpack_restart(int, int) {}
+  int size_restart(int) { return 1; }
+  int maxsize_restart() { return 1; }
   double memory_usage();
   // FILE.pvd of keyword vtk, "" without it (two fixes may not share it)
-  std::string vtk_file() const { return vtk.pvd(); }
+  std::string vtk_file() const { return frames.pvd(); }
 
  private:
   ScalarInput pressure_in, zlo_in, zhi_in; // numbers or v_name
   double tolerance_given = -1.0;           // -1: the default, from the mean diameter
   int every = 1;
   double tolerance = 0.0;
-  bigint vtk_every = 0; // keyword vtk: frames every this many steps, 0: none
-  vtk_series::Series vtk;
+  Membrane3dFrames frames; // keyword vtk
+  Membrane3dTypes types;   // keyword frictionless
 
   // the last detection: its topology over the member atoms, their IDs, its step
   membrane3d::MembraneTopology topology;
@@ -87,11 +102,9 @@ class FixMembrane3d : public Fix {
   double output[OUTPUT_SIZE];
   bool centres_placed = false; // output[VOLUME] is this step's
 
-  void read_vtk(class StyleArgs &args);
-  void write_frame(const membrane3d::LateralSurface &membrane);
   void evaluate_inputs();
-  void check_between_platens(const GatheredSpheres &g);
   void detect();
+  void wear_types(const GatheredSpheres &g);
   void place_and_apply();
   [[noreturn]] void fail(const char *what, const char *advice);
 };

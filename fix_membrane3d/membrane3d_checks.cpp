@@ -87,3 +87,18 @@ void same_on_every_rank(LAMMPS *lmp, const char *prefix, const ScalarInput *cons
     k++;
   }
 }
+
+void check_between_platens(LAMMPS *lmp, const char *prefix, const GatheredSpheres &g,
+                           const membrane3d::Platens &platens)
+{
+  for (std::size_t k = 0; k < g.spheres.size(); k++) {
+    const double z = g.spheres[k].x.z();
+    if (z > platens.lo && z < platens.hi) continue;
+    lmp->error->all(FLERR, (std::string(prefix) + "atom " + std::to_string(g.tags[k]) +
+                            " at z = " + number_text(z) + " is not between zlo = " +
+                            number_text(platens.lo) + " and zhi = " + number_text(platens.hi) +
+                            " at step " + std::to_string(lmp->update->ntimestep) +
+                            "; the platens must enclose every sphere centre of the group")
+                               .c_str());
+  }
+}

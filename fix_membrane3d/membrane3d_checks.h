@@ -10,11 +10,17 @@
 
 #include "lammps.h"
 
+#include "lateral_surface.h"
+#include "membrane3d_gather.h"
 #include "scalar_input.h"
 
 namespace LAMMPS_NS {
 class Fix;
 }
+
+// Every sphere centre of `g` strictly between the platens (else names the atom).
+void check_between_platens(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const GatheredSpheres &g,
+                           const membrane3d::Platens &platens);
 
 // No other membrane3d shares a sphere or the vtk file with `self`.
 void check_other_membranes(LAMMPS_NS::LAMMPS *lmp, const char *prefix, LAMMPS_NS::Fix *self);

@@ -12,12 +12,16 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-enum Field { F_TAG, F_X, F_Y, F_Z, F_R, FIELDS };
+enum Field { F_TAG, F_X, F_Y, F_Z, F_R, F_TYPE, FIELDS };
 
 void pack(Atom *atom, int i, std::vector<double> &send)
 {
-  const double fields[FIELDS] = {static_cast<double>(atom->tag[i]), atom->x[i][0], atom->x[i][1],
-                                 atom->x[i][2], atom->radius[i]};
+  const double fields[FIELDS] = {static_cast<double>(atom->tag[i]),
+                                 atom->x[i][0],
+                                 atom->x[i][1],
+                                 atom->x[i][2],
+                                 atom->radius[i],
+                                 static_cast<double>(atom->type[i])};
   send.insert(send.end(), fields, fields + FIELDS);
 }
 
@@ -34,10 +38,12 @@ void share(LAMMPS *lmp, const std::vector<double> &send, GatheredSpheres &out)
             [&all](std::size_t a, std::size_t b) { return all[a * FIELDS] < all[b * FIELDS]; });
   out.tags.clear();
   out.spheres.clear();
+  out.types.clear();
   for (std::size_t k : order) {
     const double *f = &all[k * FIELDS];
     out.tags.push_back(static_cast<int>(f[F_TAG]));
     out.spheres.push_back({Eigen::Vector3d(f[F_X], f[F_Y], f[F_Z]), f[F_R]});
+    out.types.push_back(static_cast<int>(f[F_TYPE]));
   }
 }
 

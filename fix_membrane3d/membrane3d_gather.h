@@ -13,6 +13,7 @@
 struct GatheredSpheres {
   std::vector<int> tags;                   // ascending
   std::vector<membrane3d::Sphere> spheres; // in the same order
+  std::vector<int> types;                  // their atom types now
 };
 
 // Every atom of the group.

@@ -1,0 +1,55 @@
+#include "membrane3d_types.h"
+
+#include "atom.h"
+
+void Membrane3dTypes::set_all_copies(int tag, int type)
+{
+  if (tag > atom->map_tag_max) return;
+  for (int i = atom->map(tag); i >= 0; i = atom->sametag[i]) atom->type[i] = type;
+}
+
+void Membrane3dTypes::change(const std::vector<int> &tags, const std::vector<int> &types)
+{
+  if (type_ <= 0) return;
+  std::map<int, int> now;
+  for (std::size_t k = 0; k < tags.size(); k++) {
+    const auto known = own_type_.find(tags[k]);
+    // a sphere already on the membrane wears type T: its own type is the one kept
+    now[tags[k]] = known != own_type_.end() ? known->second : types[k];
+  }
+  for (const auto &left : own_type_)
+    if (!now.count(left.first)) set_all_copies(left.first, left.second);
+  own_type_.swap(now);
+  for (const auto &on : own_type_) set_all_copies(on.first, type_);
+  applied_ = true;
+}
+
+void Membrane3dTypes::restore()
+{
+  if (applied_)
+    for (const auto &on : own_type_) set_all_copies(on.first, on.second);
+  own_type_.clear(); // between runs a type may be set anew: gathered again at the next
+  applied_ = false;
+}
+
+void Membrane3dTypes::restore_for_restart()
+{
+  const int nlocal = atom->nlocal;
+  restored_.assign(nlocal, 0);
+  if (!applied_) return;
+  for (const auto &on : own_type_) {
+    const int i = on.first <= atom->map_tag_max ? atom->map(on.first) : -1;
+    if (i < 0 || i >= nlocal || atom->type[i] != type_) continue;
+    atom->type[i] = on.second;
+    restored_[i] = 1;
+  }
+  applied_ = false; // pre_force gives the type again to a sphere the write skipped
+}
+
+void Membrane3dTypes::packed(int i)
+{
+  if (i < static_cast<int>(restored_.size()) && restored_[i]) {
+    atom->type[i] = type_;
+    restored_[i] = 0;
+  }
+}
