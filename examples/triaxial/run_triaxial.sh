@@ -2,7 +2,7 @@
 # The triaxial example in one command: prepare, shear with the membrane, plot.
 #   examples/triaxial/run_triaxial.sh [--quick] [--np N]
 # --quick: a 20 mm cylinder (about 290 spheres, under a minute); default the 50 mm
-# cylinder (about 7 700 spheres, about 5.5 minutes on 2 cores). Writes
+# cylinder (about 7 700 spheres, about 6 minutes on 2 cores). Writes
 # out/triaxial/triaxial.txt, .png, .log and the compressed sample's restart.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
