@@ -84,9 +84,16 @@ class PlatenClip {
       w[j] = 1;
       poly.add({x[j], w, -1, j});
     }
-    poly = clip(poly, f, platens_.lo, +1, 1);
-    poly = clip(poly, f, platens_.hi, -1, 2);
-    if (poly.n < 3) return;
+    // most facets lie between the platens (the clips would keep them as they are) or
+    // wholly beyond one (they would drop them)
+    const double z_lo = std::min({x[0].z(), x[1].z(), x[2].z()});
+    const double z_hi = std::max({x[0].z(), x[1].z(), x[2].z()});
+    if (z_hi < platens_.lo || z_lo > platens_.hi) return;
+    if (z_lo < platens_.lo || z_hi > platens_.hi) {
+      poly = clip(poly, f, platens_.lo, +1, 1);
+      poly = clip(poly, f, platens_.hi, -1, 2);
+      if (poly.n < 3) return;
+    }
     std::array<int, 5> corner;
     for (int k = 0; k < poly.n; ++k) corner[k] = corner_index(poly.corner[k], f, sphere);
     for (int k = 1; k + 1 < poly.n; ++k)
@@ -262,6 +269,10 @@ std::pair<double, double> eigenvalue_range(const Eigen::Matrix3d &m)
 // take the eigenvectors.
 Eigen::Vector3d least_squares_offset(const Eigen::Matrix3d &m, const Eigen::Vector3d &b)
 {
+  // det <= lambda_min lambda_max^2 and lambda_max <= tr: a large determinant shows every
+  // direction constrained without the closed form (its acos and cos)
+  const double trace = m.trace();
+  if (m.determinant() > 2 * kUnconstrained * trace * trace * trace) return m.llt().solve(b);
   const std::pair<double, double> range = eigenvalue_range(m);
   if (range.first > 2 * kUnconstrained * range.second) return m.llt().solve(b);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(m);
@@ -379,6 +390,8 @@ Eigen::Vector2d membrane_axis(const LateralSurface &membrane)
 void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres, double p,
                       std::vector<Eigen::Vector3d> &load)
 {
+  if (std::find(membrane.side.begin(), membrane.side.end(), Side::outside) == membrane.side.end())
+    return; // no escapee: no axis needed
   const Eigen::Vector2d axis = membrane_axis(membrane);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (membrane.side.at(i) != Side::outside) continue;
