@@ -50,8 +50,8 @@ const char *const USE_PRESSURE =
 const char *const USE_ZLO = "zlo Z: the lower platen surface (length), a number or v_name";
 const char *const USE_ZHI = "zhi Z: the upper platen surface (length), a number or v_name";
 const char *const USE_EVERY = "every N: find the membrane again every N >= 1 steps";
-const char *const USE_FRICTIONLESS =
-    "frictionless T: the atom type membrane spheres take (its friction with every type 0)";
+const char *const USE_FRICTIONLESS = "frictionless T: the atom type membrane spheres take (its "
+                                     "friction with every type 0), or 0 for none";
 const char *const USE_VTK = "vtk N FILE: write the membrane every N >= 1 steps to FILE_<step>.vtp, "
                             "collected in FILE.pvd";
 const std::string USE_TOLERANCE =
@@ -90,7 +90,7 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
     } else if (key == "every") {
       every = static_cast<int>(args.integer(1, 1000000000L, USE_EVERY));
     } else if (key == "frictionless") {
-      types.set_type(static_cast<int>(args.integer(1, atom->ntypes, USE_FRICTIONLESS)));
+      types.set_type(static_cast<int>(args.integer(0, atom->ntypes, USE_FRICTIONLESS)));
     } else if (key == "vtk") {
       frames.read(args, PREFIX, USE_VTK,
                   {"pressure", "zlo", "zhi", "tolerance", "every", "frictionless", "vtk"});

@@ -2,9 +2,10 @@
 # The rigid-boundary comparison in one command: prepare a cuboid sample per seed
 # (in.cuboid_prepare), shear each with four servo-controlled side walls and with fix
 # membrane3d (in.cuboid_shear), then tabulate and plot (compare_boundaries.py).
-#   examples/triaxial/run_comparison.sh [--quick] [--np N] [--seeds "S1 S2 ..."]
+#   examples/triaxial/run_comparison.sh [--quick] [--np N] [--seeds "S1 S2 ..."] [--frictionless T]
 # Default: 3 seeds, 36 mm cuboids of about 4 000 spheres, about 5 minutes per seed on
-# 2 cores; --quick: 16 mm cuboids of about 400 spheres, 2 seeds, about a minute each.
+# 2 cores; --quick: 16 mm cuboids of about 400 spheres, 2 seeds, about a minute each;
+# --frictionless 2: the membrane spheres wear the frictionless type 2 (contacts.inc).
 # Writes out/comparison/: per seed the prepared sample, each shear's .txt and log,
 # the membrane's VTK frames (ParaView: membrane_SEED_membrane.pvd), comparison.md
 # and comparison.png.
@@ -16,13 +17,15 @@ seeds="86028121 104395301 122949823"
 W=0.036
 size=()
 vtkevery=2500
+frictionless=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) W=0.016; size=(-var hfill 0.06 -var nsettle 8000 -var ncompress 12000)
              seeds="86028121 104395301"; vtkevery=1000 ;;
     --np) np=$2; shift ;;
     --seeds) seeds=$2; shift ;;
-    *) echo "usage: $0 [--quick] [--np N] [--seeds \"S1 S2 ...\"]"; exit 2 ;;
+    --frictionless) frictionless=$2; shift ;;
+    *) echo "usage: $0 [--quick] [--np N] [--seeds \"S1 S2 ...\"] [--frictionless T]"; exit 2 ;;
   esac
   shift
 done
@@ -43,7 +46,8 @@ for s in $seeds; do
   for b in walls membrane; do
     echo "[$(date +%T)] seed $s: shear with the $b"
     run "$out/${b}_$s.log" -in in.cuboid_shear -var sample "$out/cuboid_$s" -var W "$W" \
-      -var boundary "$b" -var out "$out/${b}_$s" -var vtkevery "$vtkevery"
+      -var boundary "$b" -var out "$out/${b}_$s" -var vtkevery "$vtkevery" \
+      -var frictionless "$frictionless"
   done
 done
 /usr/bin/python3 compare_boundaries.py "$out" $seeds
