@@ -58,7 +58,8 @@ const std::string USE_TOLERANCE = "tolerance G: the largest gap (length) counted
 /* ---------------------------------------------------------------------- */
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), frames(lammps, PREFIX),
+  : Fix(lammps, narg, arg), inputs("ylo", "yhi", USE_PRESSURE, USE_YLO, USE_YHI),
+    frames(lammps, PREFIX),
     gather(lammps, PREFIX, groupbit), atoms(lammps), d50(0.0), density(0.0), pressure(0.0),
     ylo(0.0), yhi(0.0), flag_capacity(0)
 {
@@ -67,20 +68,11 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
   chains[LEFT].side = Side::Left;
   chains[RIGHT].side = Side::Right;
   chains[LEFT].active = chains[RIGHT].active = true;
-  bool have_pressure = false, have_ylo = false, have_yhi = false;
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
   while (args.more()) {
     const std::string key = args.keyword();
-    if (key == "pressure") {
-      pressure_in.read(args, ScalarInput::Sign::NonNegative, USE_PRESSURE);
-      have_pressure = true;
-    } else if (key == "ylo") {
-      ylo_in.read(args, ScalarInput::Sign::Any, USE_YLO);
-      have_ylo = true;
-    } else if (key == "yhi") {
-      yhi_in.read(args, ScalarInput::Sign::Any, USE_YHI);
-      have_yhi = true;
-    } else if (key == "sides") {
+    if (inputs.read(args, key)) continue; // pressure, ylo, yhi
+    if (key == "sides") {
       const int which = args.choice({"left", "right", "both"}, USE_SIDES);
       chains[LEFT].active = which != 1;
       chains[RIGHT].active = which != 0;
@@ -110,9 +102,7 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
       args.unknown(keywords);
     }
   }
-  if (!have_pressure) args.required("pressure", USE_PRESSURE);
-  if (!have_ylo) args.required("ylo", USE_YLO);
-  if (!have_yhi) args.required("yhi", USE_YHI);
+  inputs.require(args);
   definition.sides_mask = sides_mask();
   atoms.set_frictionless_type(definition.frictionless_type);
 
@@ -147,9 +137,7 @@ int FixMembrane2d::setmask()
 
 void FixMembrane2d::init()
 {
-  pressure_in.init(lmp, PREFIX, "pressure");
-  ylo_in.init(lmp, PREFIX, "ylo");
-  yhi_in.init(lmp, PREFIX, "yhi");
+  inputs.init(lmp, PREFIX);
   check_frictionless_type(lmp, PREFIX, definition.frictionless_type, style, "chain disks");
   check_other_membranes(lmp, PREFIX, this, gather);
 
@@ -167,15 +155,15 @@ void FixMembrane2d::init()
 
 void FixMembrane2d::evaluate_platens()
 {
-  ylo = ylo_in.evaluate_checked(lmp, PREFIX, "ylo", false);
-  yhi = yhi_in.evaluate_checked(lmp, PREFIX, "yhi", false);
-  check_platens_order(lmp, PREFIX, ylo_in, ylo, yhi);
+  ylo = inputs.lo.evaluate_checked(lmp, PREFIX, "ylo", false);
+  yhi = inputs.hi.evaluate_checked(lmp, PREFIX, "yhi", false);
+  check_platens_order(lmp, PREFIX, inputs.lo, ylo, yhi);
 }
 
 void FixMembrane2d::setup_pre_force(int vflag)
 {
   evaluate_platens();
-  check_platens_enclose(lmp, PREFIX, gather, ylo_in, ylo, yhi_in, yhi);
+  check_platens_enclose(lmp, PREFIX, gather, inputs.lo, ylo, inputs.hi, yhi);
   gather.start_traffic(update->ntimestep, run.counters.detections);
   // the chains of the last run (or the restart file) still hold when no disk
   // of the group was created, deleted, renumbered, retyped or moved since
@@ -311,7 +299,7 @@ void FixMembrane2d::gather_watched()
 void FixMembrane2d::post_force(int)
 {
   const ScopedSeconds timing(gather.fix_seconds());
-  pressure = pressure_in.evaluate_checked(lmp, PREFIX, "pressure", true);
+  pressure = inputs.pressure.evaluate_checked(lmp, PREFIX, "pressure", true);
   // positions of the chain disks: gathered in pre_force (they do not move in between)
   for (int k = LEFT; k <= RIGHT; k++)
     if (chains[k].active)

@@ -30,6 +30,7 @@ FixStyle(membrane2d,FixMembrane2d)
 #include "membrane_atoms.h"
 #include "membrane_output.h"
 #include "membrane_frames.h"
+#include "platen_inputs.h"
 #include "scalar_input.h"
 
 namespace LAMMPS_NS {
@@ -70,7 +71,7 @@ class FixMembrane2d : public Fix {
   // MembraneAtoms::Flag (membrane_atoms.h)
 
  private:
-  ScalarInput pressure_in, ylo_in, yhi_in; // numbers or v_name
+  PlatenInputs inputs; // pressure, ylo, yhi
   membrane::Definition definition;         // as given (band/tolerance -1: default)
   bool detect_auto() const { return definition.detect_every == membrane::DETECT_AUTO; }
   MembraneFrames frames; // keywords polyline and vtk

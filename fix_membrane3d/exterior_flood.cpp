@@ -7,6 +7,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -73,8 +74,26 @@ public:
         if (flooded_[c->neighbor(k)->info()] && !ignored_facet(c, k))
           b.facets.push_back(outward_facet(c, k));
     }
+    for (auto &f : b.facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    std::sort(b.facets.begin(), b.facets.end());
     b.side = sides();
     return b;
+  }
+
+  void export_cells(FloodCells &out) const {
+    out.vertex.resize(cells_.size());
+    out.neighbour.resize(cells_.size());
+    for (Cell c : cells_)
+      for (int k = 0; k < 4; ++k) {
+        const Vertex v = c->vertex(k);
+        out.vertex[c->info()][k] = finite(v) ? v->info() : -1;
+        out.neighbour[c->info()][k] = c->neighbor(k)->info();
+      }
+    out.flooded = flooded_;
+    out.hidden = hidden_;
+    out.hidden_cell = hidden_cell_;
+    out.kept_group = kept_group_;
+    out.other_group = other_group_;
   }
 
 private:
@@ -84,6 +103,8 @@ private:
   Triangulation triangulation_;
   std::vector<Cell> cells_;      // by cell info
   std::vector<char> flooded_;    // by cell info
+  mutable std::vector<int> hidden_, hidden_cell_; // found by sides()
+  long kept_group_ = 0, other_group_ = 0;
 
   bool finite(Vertex v) const { return !triangulation_.is_infinite(v); }
 
@@ -165,6 +186,11 @@ private:
     int keep = 0;
     for (std::size_t g = 1; g < size.size(); ++g)
       if (size[g] > size[keep]) keep = static_cast<int>(g);
+    for (std::size_t g = 0; g < size.size(); ++g)
+      if (static_cast<int>(g) == keep)
+        kept_group_ = size[g];
+      else
+        other_group_ = std::max(other_group_, size[g]);
     for (std::size_t i = 0; i < cells_.size(); ++i)
       if (!flooded_[i] && group[i] != keep) flooded_[i] = 1;
   }
@@ -184,6 +210,8 @@ private:
   // all are flooded. A sphere hidden by the power triangulation (inside the power balls
   // of its neighbours) takes the side of the cell that contains its centre.
   std::vector<Side> sides() const {
+    hidden_.clear();
+    hidden_cell_.clear();
     std::vector<char> wet(spheres_.size(), 0), dry(spheres_.size(), 0), seen(spheres_.size(), 0);
     for (Cell c : cells_)
       for (int k = 0; k < 4; ++k) {
@@ -199,6 +227,8 @@ private:
         const Cell c = triangulation_.locate(
             K::Weighted_point_3(K::Point_3(s.x.x(), s.x.y(), s.x.z()), s.r * s.r));
         side[i] = flooded_[c->info()] ? Side::outside : Side::inside;
+        hidden_.push_back(static_cast<int>(i));
+        hidden_cell_.push_back(c->info());
       } else if (wet[i]) {
         side[i] = dry[i] ? Side::surface : Side::outside;
       }
@@ -210,9 +240,12 @@ private:
 } // namespace
 
 Boundary exterior_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                           double tolerance) {
+                           double tolerance, FloodCells *cells) {
   check_input(spheres, sealed, tolerance);
-  return Flood(spheres, sealed, tolerance).boundary();
+  const Flood flood(spheres, sealed, tolerance);
+  Boundary b = flood.boundary();
+  if (cells) flood.export_cells(*cells);
+  return b;
 }
 
 } // namespace membrane3d

@@ -45,10 +45,24 @@ struct Boundary {
   std::vector<Side> side;                  // per sphere
 };
 
+// The flooded triangulation itself, for what the boundary depends on (flood_watch.h):
+// cells by index, vertex -1 the infinite one, neighbour k opposite vertex k.
+struct FloodCells {
+  std::vector<std::array<int, 4>> vertex;
+  std::vector<std::array<int, 4>> neighbour;
+  std::vector<char> flooded;
+  std::vector<int> hidden, hidden_cell; // spheres that are no vertex, and the cell holding each
+  long kept_group = 0, other_group = 0; // cells (with an unsealed sphere) of the sample's dry
+                                        // group and of the largest other one
+};
+
 // Throws std::invalid_argument for fewer than four spheres, a radius that is not
-// positive or a tolerance that is negative or not finite, naming the value.
+// positive or a tolerance that is negative or not finite, naming the value. The
+// facets come in a canonical order (each starting at its lowest sphere, sorted), so
+// that the same boundary is the same list whatever the triangulation's history.
+// With `cells`, also the triangulation and its flood.
 Boundary exterior_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                           double tolerance);
+                           double tolerance, FloodCells *cells = nullptr);
 
 } // namespace membrane3d
 

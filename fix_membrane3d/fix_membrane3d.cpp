@@ -49,7 +49,8 @@ const char *const USE_PRESSURE =
     "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
 const char *const USE_ZLO = "zlo Z: the lower platen surface (length), a number or v_name";
 const char *const USE_ZHI = "zhi Z: the upper platen surface (length), a number or v_name";
-const char *const USE_EVERY = "every N: find the membrane again every N >= 1 steps";
+const char *const USE_EVERY = "every auto|N: find the membrane again when it can have changed "
+                              "(auto) or every N >= 1 steps";
 const char *const USE_FRICTIONLESS = "frictionless T: the atom type membrane spheres take (its "
                                      "friction with every type 0), or 0 for none";
 const char *const USE_VTK = "vtk N FILE: write the membrane every N >= 1 steps to FILE_<step>.vtp, "
@@ -63,7 +64,8 @@ const std::string USE_TOLERANCE =
 /* ---------------------------------------------------------------------- */
 
 FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), frames(lammps), types(lammps)
+  : Fix(lammps, narg, arg), inputs("zlo", "zhi", USE_PRESSURE, USE_ZLO, USE_ZHI), frames(lammps),
+    types(lammps)
 {
   if (domain->dimension != 3) fail("requires dimension 3", "for 2D samples use fix membrane2d");
   if (!atom->radius_flag) fail("requires atom style sphere", "use atom_style granular");
@@ -72,23 +74,17 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
   if (domain->zperiodic)
     fail("the box is periodic in z", "the platens bound the sample in z: use boundary f f f");
 
-  bool have_pressure = false, have_zlo = false, have_zhi = false;
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
   while (args.more()) {
     const std::string key = args.keyword();
-    if (key == "pressure") {
-      pressure_in.read(args, ScalarInput::Sign::NonNegative, USE_PRESSURE);
-      have_pressure = true;
-    } else if (key == "zlo") {
-      zlo_in.read(args, ScalarInput::Sign::Any, USE_ZLO);
-      have_zlo = true;
-    } else if (key == "zhi") {
-      zhi_in.read(args, ScalarInput::Sign::Any, USE_ZHI);
-      have_zhi = true;
-    } else if (key == "tolerance") {
+    if (inputs.read(args, key)) continue; // pressure, zlo, zhi
+    if (key == "tolerance") {
       tolerance_given = args.non_negative(USE_TOLERANCE);
     } else if (key == "every") {
-      every = static_cast<int>(args.integer(1, 1000000000L, USE_EVERY));
+      const char *value = args.value(USE_EVERY);
+      every = strcmp(value, "auto") == 0 ? AUTO
+                                         : static_cast<int>(args.to_integer(value, 1, 1000000000L,
+                                                                            USE_EVERY));
     } else if (key == "frictionless") {
       types.set_type(static_cast<int>(args.integer(0, atom->ntypes, USE_FRICTIONLESS)));
     } else if (key == "vtk") {
@@ -98,9 +94,7 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
       args.unknown(KEYWORDS);
     }
   }
-  if (!have_pressure) args.required("pressure", USE_PRESSURE);
-  if (!have_zlo) args.required("zlo", USE_ZLO);
-  if (!have_zhi) args.required("zhi", USE_ZHI);
+  inputs.require(args);
 
   vector_flag = 1;
   size_vector = OUTPUT_SIZE;
@@ -136,9 +130,7 @@ int FixMembrane3d::setmask()
 
 void FixMembrane3d::init()
 {
-  pressure_in.init(lmp, PREFIX, "pressure");
-  zlo_in.init(lmp, PREFIX, "zlo");
-  zhi_in.init(lmp, PREFIX, "zhi");
+  inputs.init(lmp, PREFIX);
 
   double sums[2] = {0.0, 0.0}; // diameters, spheres
   for (int i = 0; i < atom->nlocal; i++)
@@ -155,14 +147,14 @@ void FixMembrane3d::init()
 
 void FixMembrane3d::evaluate_inputs()
 {
-  double v[3] = {pressure_in.evaluate(lmp), zlo_in.evaluate(lmp), zhi_in.evaluate(lmp)};
-  const ScalarInput *inputs[3] = {&pressure_in, &zlo_in, &zhi_in};
-  same_on_every_rank(lmp, PREFIX, inputs, {"pressure", "zlo", "zhi"}, v, warned_spread);
-  pressure = pressure_in.checked(lmp, PREFIX, "pressure", true, v[0]);
-  platens.lo = zlo_in.checked(lmp, PREFIX, "zlo", false, v[1]);
-  platens.hi = zhi_in.checked(lmp, PREFIX, "zhi", false, v[2]);
+  double v[3] = {inputs.pressure.evaluate(lmp), inputs.lo.evaluate(lmp), inputs.hi.evaluate(lmp)};
+  const ScalarInput *given[3] = {&inputs.pressure, &inputs.lo, &inputs.hi};
+  same_on_every_rank(lmp, PREFIX, given, {"pressure", "zlo", "zhi"}, v, warned_spread);
+  pressure = inputs.pressure.checked(lmp, PREFIX, "pressure", true, v[0]);
+  platens.lo = inputs.lo.checked(lmp, PREFIX, "zlo", false, v[1]);
+  platens.hi = inputs.hi.checked(lmp, PREFIX, "zhi", false, v[2]);
   if (!(platens.lo < platens.hi))
-    error->all(FLERR, keyword_message(PREFIX, "zlo", zlo_in.text(),
+    error->all(FLERR, keyword_message(PREFIX, "zlo", inputs.lo.text(),
                                       "is " + number_text(platens.lo) +
                                           ", not below zhi = " + number_text(platens.hi) +
                                           " at step " + std::to_string(update->ntimestep) +
@@ -193,8 +185,10 @@ void FixMembrane3d::post_run()
 void FixMembrane3d::pre_force(int)
 {
   evaluate_inputs();
-  bool due = member_tags.empty() || update->ntimestep - last_detection >= every;
-  if (!due) {
+  bool due = member_tags.empty();
+  if (!due && every == AUTO) {
+    due = automatic.can_have_changed(lmp, groupbit, platens, tolerance, members);
+  } else if (!due && !(due = update->ntimestep - last_detection >= every)) {
     gather_tags(lmp, member_tags, members);
     due = members.tags.size() != member_tags.size(); // an atom was lost: find it anew
   }
@@ -237,7 +231,10 @@ void FixMembrane3d::detect()
   std::vector<int> index;
   try {
     topology = membrane3d::members_only(
-        membrane3d::detect_membrane(all.spheres, platens, tolerance), index);
+        every == AUTO ? automatic.detect(all, platens, tolerance)
+                      : membrane3d::detect_membrane(all.spheres, platens, tolerance),
+        index);
+    if (every == AUTO) automatic.set_members(index);
   } catch (const std::exception &e) {
     fail(e.what(), "the group must be one packing whose spheres are linked (gaps within the "
                    "tolerance)");
@@ -345,6 +342,7 @@ void FixMembrane3d::write_restart(FILE *fp)
   state.detections = detections;
   state.member_tags = member_tags;
   state.topology = topology;
+  if (every == AUTO) automatic.save(state);
   const std::vector<double> rec = membrane3d::write_record(state);
   if (comm->me == 0) {
     const int size = static_cast<int>(rec.size() * sizeof(double));
@@ -375,6 +373,7 @@ void FixMembrane3d::restart(char *raw)
   last_detection = static_cast<bigint>(state.last_detection);
   member_tags = state.member_tags;
   topology = state.topology;
+  if (every == AUTO) automatic.restore(state);
 }
 
 int FixMembrane3d::pack_restart(int i, double *buf)
@@ -388,5 +387,6 @@ double FixMembrane3d::memory_usage()
 {
   return static_cast<double>(member_tags.capacity() * sizeof(int) +
                              topology.facets.capacity() * sizeof(topology.facets[0]) +
-                             members.spheres.capacity() * sizeof(membrane3d::Sphere));
+                             members.spheres.capacity() * sizeof(membrane3d::Sphere)) +
+         automatic.memory_usage();
 }

@@ -26,10 +26,11 @@ FixStyle(membrane3d,FixMembrane3d)
 
 #include "fix.h"
 #include "lateral_surface.h"
+#include "membrane3d_auto.h"
 #include "membrane3d_frames.h"
 #include "membrane3d_gather.h"
 #include "membrane3d_types.h"
-#include "scalar_input.h"
+#include "platen_inputs.h"
 
 namespace LAMMPS_NS {
 
@@ -80,9 +81,11 @@ class FixMembrane3d : public Fix {
   std::string vtk_file() const { return frames.pvd(); }
 
  private:
-  ScalarInput pressure_in, zlo_in, zhi_in; // numbers or v_name
+  PlatenInputs inputs; // pressure, zlo, zhi
   double tolerance_given = -1.0;           // -1: the default, from the mean diameter
-  int every = 1;
+  enum { AUTO = 0 };
+  int every = 1; // or AUTO
+  Membrane3dAuto automatic; // every auto
   double tolerance = 0.0;
   Membrane3dFrames frames; // keyword vtk
   Membrane3dTypes types;   // keyword frictionless

@@ -14,43 +14,6 @@ namespace membrane3d {
 
 namespace {
 
-// The spheres and their images in the platens; entry k is sphere original[k] or its
-// image in the lower (-1) or upper (+1) platen.
-struct Mirrored {
-  std::vector<Sphere> spheres;
-  std::vector<bool> sealed;
-  std::vector<int> original, image;
-};
-
-Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p)
-{
-  Eigen::Vector3d y = x;
-  if (image != 0) y.z() = 2 * (image < 0 ? p.lo : p.hi) - x.z();
-  return y;
-}
-
-Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
-                           double tolerance)
-{
-  double r_max = 0;
-  for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
-  const double band = 3 * (2 * r_max + tolerance);
-  Mirrored m;
-  auto add = [&m, &platens](const Sphere &s, int i, int image) {
-    m.spheres.push_back({image_position(s.x, image, platens), s.r});
-    m.sealed.push_back(image != 0);
-    m.original.push_back(i);
-    m.image.push_back(image);
-  };
-  for (std::size_t i = 0; i < spheres.size(); ++i) add(spheres[i], static_cast<int>(i), 0);
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const Sphere &s = spheres[i];
-    if (s.x.z() - platens.lo < band) add(s, static_cast<int>(i), -1);
-    if (platens.hi - s.x.z() < band) add(s, static_cast<int>(i), +1);
-  }
-  return m;
-}
-
 // A corner of a clipped facet: its position, its weights over the facet's three
 // vertices, and for a cut on an edge a key shared by the facets on it (-1: none).
 struct ClipPoint {
@@ -185,11 +148,13 @@ void check_platens(const std::vector<Sphere> &spheres, const Platens &p)
 } // namespace
 
 MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Platens &platens,
-                                 double tolerance)
+                                 double tolerance, Mirrored *mirrored, FloodCells *cells)
 {
   check_platens(spheres, platens);
-  const Mirrored m = mirror_in_platens(spheres, platens, tolerance);
-  const Boundary boundary = exterior_boundary(m.spheres, m.sealed, tolerance);
+  Mirrored own;
+  Mirrored &m = mirrored ? *mirrored : own;
+  m = mirror_in_platens(spheres, platens, tolerance);
+  const Boundary boundary = exterior_boundary(m.spheres, m.sealed, tolerance, cells);
   if (boundary.facets.empty())
     throw std::runtime_error("no surface: no facet of links between the platens separates the " +
                              std::to_string(spheres.size()) +

@@ -34,16 +34,13 @@
 #define LIGGGHTS_MEMBRANE_LATERAL_SURFACE_H
 
 #include "exterior_flood.h"
+#include "platen_images.h"
 #include "surface_loads.h"
 
 #include <array>
 #include <vector>
 
 namespace membrane3d {
-
-struct Platens {
-  double lo, hi; // z of the lower and upper platen
-};
 
 // A corner of the lateral surface as weights over up to three spheres (-1: unused).
 struct Corner {
@@ -76,8 +73,11 @@ struct MembraneTopology {
 // in order, a centre not strictly between them (naming the sphere) and what
 // exterior_boundary throws; std::runtime_error when no surface separates the spheres
 // from the outside (no packing: no closed shell of links).
+// With `mirrored` and `cells`, also the spheres with their images and the flooded
+// triangulation (for detection_watch.h).
 MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Platens &platens,
-                                 double tolerance);
+                                 double tolerance, Mirrored *mirrored = nullptr,
+                                 FloodCells *cells = nullptr);
 
 // The topology over its members only: the spheres on a facet or outside, renumbered in
 // their order; `members` gets their indices in the detection's spheres.

@@ -6,7 +6,7 @@ namespace membrane3d {
 
 namespace {
 const double MAGIC = 3.0e7 + 3;  // fix membrane3d's records, not membrane2d's
-const int VERSION = 1;
+const int VERSION = 2; // 2: the detection's spheres
 } // namespace
 
 std::vector<double> write_record(const Membrane3dState &s) {
@@ -26,11 +26,19 @@ std::vector<double> write_record(const Membrane3dState &s) {
       w.put(v.sphere);
       w.put(v.image);
     }
+  w.put(s.sample_platens.lo);
+  w.put(s.sample_platens.hi);
+  w.put(static_cast<double>(s.sample_tags.size()));
+  for (std::size_t k = 0; k < s.sample_tags.size(); ++k) {
+    w.put(s.sample_tags[k]);
+    for (int d = 0; d < 3; ++d) w.put(s.sample.at(k).x[d]);
+    w.put(s.sample[k].r);
+  }
   return w.finish();
 }
 
 std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
-  RestartRecordReader r(data, n, MAGIC, VERSION);
+  RestartRecordReader r(data, n, MAGIC, VERSION, 1);
   Membrane3dState in;
   in.tolerance_given = r.get();
   in.every = static_cast<int>(r.get());
@@ -53,6 +61,18 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
         return "a facet's vertex is corrupt";
     }
     in.topology.facets.push_back(facet);
+  }
+  if (r.version() >= 2) {
+    in.sample_platens.lo = r.get();
+    in.sample_platens.hi = r.get();
+    const std::size_t spheres = r.count(5);
+    for (std::size_t k = 0; k < spheres && r.ok(); ++k) {
+      in.sample_tags.push_back(static_cast<int>(r.get()));
+      Sphere sphere;
+      for (int d = 0; d < 3; ++d) sphere.x[d] = r.get();
+      sphere.r = r.get();
+      in.sample.push_back(sphere);
+    }
   }
   if (!r.finished()) return r.error();
   s = in;

@@ -1,6 +1,7 @@
 // The restart record of fix membrane3d (no LIGGGHTS: unit-tested in
 // tests/unit/membrane3d): its definition, the last detection (the topology over the
-// member atoms' IDs and its step) and the detection counter.
+// member atoms' IDs and its step; with every auto, the spheres it was made on) and
+// the detection counter. Records of version 1 (without the spheres) are read.
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 
@@ -19,6 +20,10 @@ struct Membrane3dState {
   double detections = 0;
   std::vector<int> member_tags;
   MembraneTopology topology;    // over the members
+  // with every auto: the group's spheres at the detection (by ID) and the platens
+  std::vector<int> sample_tags;
+  std::vector<Sphere> sample;
+  Platens sample_platens{0, 0};
 };
 
 std::vector<double> write_record(const Membrane3dState &state);

@@ -1,12 +1,15 @@
 // Hand-made packings of equal spheres (radius 1/2, touching at spacing 1) for the
 // membrane3d surface tests: a simple-cubic block, a face-centred cubic block, and
-// the platens that touch their bottom and top layers.
+// the platens that touch their bottom and top layers; and a sample from a run.
 #ifndef LIGGGHTS_MEMBRANE_TEST_PACKINGS_H
 #define LIGGGHTS_MEMBRANE_TEST_PACKINGS_H
 
 #include "lateral_surface.h"
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace packings {
@@ -47,6 +50,28 @@ inline Platens touching_platens(const std::vector<Sphere> &s) {
     hi = std::max(hi, p.x.z());
   }
   return {lo - radius, hi + radius};
+}
+
+// data/cuboid_near_platen.txt: 198 spheres of a small cuboid sample sheared with fix
+// membrane3d (examples/triaxial), near its upper platen, and its platens.
+inline std::vector<Sphere> sheared_sample() {
+  std::ifstream in(MEMBRANE3D_TEST_DATA "/cuboid_near_platen.txt");
+  std::vector<Sphere> s;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    Sphere sphere;
+    row >> sphere.x.x() >> sphere.x.y() >> sphere.x.z() >> sphere.r;
+    s.push_back(sphere);
+  }
+  return s;
+}
+const Platens sheared_sample_platens{0.0, 0.019190253904679787};
+
+inline double mean_diameter(const std::vector<Sphere> &s) {
+  double d = 0;
+  for (const Sphere &x : s) d += 2 * x.r / s.size();
+  return d;
 }
 
 } // namespace packings

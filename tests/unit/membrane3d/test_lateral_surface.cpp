@@ -412,20 +412,10 @@ TEST(LateralSurface, OuterFaceOffsetIsBounded)
 // closed by its caps: no lateral load, the caps' volume its own.
 TEST(LateralSurface, OuterFacesStayBetweenThePlatens)
 {
-  std::ifstream in(MEMBRANE3D_TEST_DATA "/cuboid_near_platen.txt");
-  ASSERT_TRUE(in.good());
-  std::vector<Sphere> s;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream row(line);
-    Sphere sphere;
-    row >> sphere.x.x() >> sphere.x.y() >> sphere.x.z() >> sphere.r;
-    s.push_back(sphere);
-  }
+  const std::vector<Sphere> s = packings::sheared_sample();
   ASSERT_EQ(s.size(), 198u);
-  double diameter = 0;
-  for (const Sphere &x : s) diameter += 2 * x.r / s.size();
-  const Platens platens{0.0, 0.019190253904679787};
+  const double diameter = packings::mean_diameter(s);
+  const Platens platens = packings::sheared_sample_platens;
   const auto topology = membrane3d::detect_membrane(s, platens, 0.7 * diameter);
   const auto o = membrane3d::outer_face_offsets(topology, s, platens);
   int in_the_plane = 0;

@@ -1,0 +1,63 @@
+#include "platen_images.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace membrane3d {
+
+Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p)
+{
+  Eigen::Vector3d y = x;
+  if (image != 0) y.z() = 2 * (image < 0 ? p.lo : p.hi) - x.z();
+  return y;
+}
+
+double height_grid(const Platens &p, double band)
+{
+  // every height and image is below 4 (|lo| + |hi| + band) in size: 50 bits of it
+  // leave a margin of 2 below the 53 of a double, so that sums of two are exact
+  const double reach = 4 * (std::abs(p.lo) + std::abs(p.hi) + band);
+  int exponent = 0;
+  std::frexp(reach, &exponent);
+  return std::ldexp(1.0, exponent - 50);
+}
+
+Eigen::Vector3d mirrored_position(const Eigen::Vector3d &x, int image, const Platens &p,
+                                  double grid)
+{
+  auto on_grid = [grid](double z) { return std::nearbyint(z / grid) * grid; };
+  Eigen::Vector3d y = x;
+  y.z() = on_grid(x.z());
+  if (image != 0) y.z() = 2 * on_grid(image < 0 ? p.lo : p.hi) - y.z();
+  return y;
+}
+
+double image_band(const std::vector<Sphere> &spheres, double tolerance)
+{
+  double r_max = 0;
+  for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
+  return 3 * (2 * r_max + tolerance);
+}
+
+Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
+                           double tolerance)
+{
+  const double band = image_band(spheres, tolerance);
+  Mirrored m;
+  m.grid = height_grid(platens, band);
+  auto add = [&m, &platens](const Sphere &s, int i, int image) {
+    m.spheres.push_back({mirrored_position(s.x, image, platens, m.grid), s.r});
+    m.sealed.push_back(image != 0);
+    m.original.push_back(i);
+    m.image.push_back(image);
+  };
+  for (std::size_t i = 0; i < spheres.size(); ++i) add(spheres[i], static_cast<int>(i), 0);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const Sphere &s = spheres[i];
+    if (imaged_below(s.x.z(), platens, band)) add(s, static_cast<int>(i), -1);
+    if (imaged_above(s.x.z(), platens, band)) add(s, static_cast<int>(i), +1);
+  }
+  return m;
+}
+
+} // namespace membrane3d
