@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Step time of the triaxial sample (examples/triaxial, 7 699 spheres in a 50 mm
-# cylinder) with the rigid cylinder and with fix membrane3d every 1, 10, 50 and 200,
-# platens still, on 1 and 2 ranks. Prints the times and the ratios to the cylinder,
-# measured in one run, and the cost of one detection (from every 1 and every 200).
+# cylinder) with the rigid cylinder and with fix membrane3d every auto, 1, 10, 50 and
+# 200, platens still, on 1 and 2 ranks. Prints the times and the ratios to the
+# cylinder, measured in one run, the cost of one detection (from every 1 and every
+# 200) and the share of the steps every auto detects on.
 #   bench/membrane3d_cost.sh [RESTART] [NSTEPS]
 # RESTART: the compressed sample of examples/triaxial/in.triaxial
 # (${out}.compressed.restart, with ${out}.compressed.platen beside it).
@@ -17,27 +18,35 @@ platen=${restart%.restart}.platen
 csv=membrane3d_cost.csv
 meshdir=../examples/triaxial/meshes
 . ./step_time.sh
-# NP LATERAL EVERY NSTEPS
-ms_cost() { ms_per_step "$1" in.membrane3d_cost restart "$restart" platen "$platen" lateral "$2" every "$3" nsteps "$4"; }
-echo "ranks,lateral,every,ms_per_step" > $csv
+# NP LATERAL EVERY NSTEPS: "ms_per_step,detections" (detections in the timed steps)
+ms_cost() {
+  local log
+  log=$(mpirun --allow-run-as-root --oversubscribe -np "$1" "$exe" -in in.membrane3d_cost -log none \
+    -var restart "$restart" -var platen "$platen" -var lateral "$2" -var every "$3" -var nsteps "$4" \
+    -var meshdir "$(readlink -f "$meshdir")")
+  printf "%s,%s" "$(grep "^Loop time" <<<"$log" | tail -1 | awk '{printf "%.4f", 1000 * $4 / $9}')" \
+    "$(grep "^BENCH detections" <<<"$log" | awk '{print $3}')"
+}
+echo "ranks,lateral,every,ms_per_step,detections,steps" > $csv
 for np in 1 2; do
-  echo "$np,cylinder,0,$(ms_cost $np 0 1 "$nsteps")" >> $csv
-  for every in 200 50 10; do echo "$np,membrane,$every,$(ms_cost $np 1 $every "$nsteps")" >> $csv; done
-  echo "$np,membrane,1,$(ms_cost $np 1 1 $((nsteps / 10)))" >> $csv
+  echo "$np,cylinder,0,$(ms_cost $np 0 1 "$nsteps"),$nsteps" >> $csv
+  for every in 200 50 10 auto; do echo "$np,membrane,$every,$(ms_cost $np 1 $every "$nsteps"),$nsteps" >> $csv; done
+  echo "$np,membrane,1,$(ms_cost $np 1 1 $((nsteps / 10))),$((nsteps / 10))" >> $csv
 done
 /usr/bin/python3 - "$csv" <<'PY'
 import collections, csv, sys
 rows = collections.defaultdict(dict)
 for r in csv.DictReader(open(sys.argv[1])):
-    rows[r["ranks"]][(r["lateral"], int(r["every"]))] = float(r["ms_per_step"])
+    rows[r["ranks"]][(r["lateral"], r["every"])] = (float(r["ms_per_step"]),
+                                                   float(r["detections"] or 0) / float(r["steps"]))
 for np_, t in sorted(rows.items()):
-    base = t[("cylinder", 0)]
+    base = t[("cylinder", "0")][0]
     print("ranks %s:" % np_)
     print("  %-22s %8.3f ms/step" % ("rigid cylinder", base))
-    for every in (200, 50, 10, 1):
-        ms = t[("membrane", every)]
-        print("  %-22s %8.3f ms/step  %+7.1f %% vs cylinder" % ("membrane every %d" % every, ms,
-                                                              100 * (ms / base - 1)))
+    for every in ("200", "50", "10", "auto", "1"):
+        ms, share = t[("membrane", every)]
+        print("  %-22s %8.3f ms/step  %+7.1f %% vs cylinder  detections on %5.1f %% of the steps"
+              % ("membrane every " + every, ms, 100 * (ms / base - 1), 100 * share))
     # every 1 detects each step, every 200 almost never: the difference is a detection
-    print("  one detection          %8.1f ms" % (t[("membrane", 1)] - t[("membrane", 200)]))
+    print("  one detection          %8.1f ms" % (t[("membrane", "1")][0] - t[("membrane", "200")][0]))
 PY

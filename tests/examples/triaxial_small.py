@@ -73,6 +73,18 @@ def main():
         e1_end = float(re.search(r"TRIAXIAL done: e1 = (\S+),", log).group(1))
         t = table(out + ".txt")
         frames = vtk_frames(out + "_membrane.pvd")
+        rows, detections = {}, {}
+        for every in ("auto", "1"):
+            o = os.path.join(tmp, "every_" + every)
+            run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe,
+                 "-in", "in.triaxial", "-var", "R", "0.01", "-var", "hfill", "0.06",
+                 "-var", "nsettle", "8000", "-var", "ncompress", "10000", "-var", "nhold", "2000",
+                 "-var", "strain", "0.03", "-var", "every", every, "-var", "out", o],
+                o + ".log", cwd=EXAMPLE)
+            with open(o + ".txt") as f:
+                lines = [l.split() for l in f if not l.startswith("#")]
+            rows[every] = [l[:-1] for l in lines]  # all but the detection counter
+            detections[every] = float(lines[-1][-1]) if lines else 0.0
     check(abs(compressed / P - 1) < 0.05, "compressed in the cylinder: sigma1 = %.0f Pa" % compressed)
     sigma1, spheres, escaped = float(iso.group(1)), float(iso.group(4)), float(iso.group(5))
     check(abs(sigma1 / P - 1) < 0.10, "isotropic with the membrane: sigma1 = %.0f Pa" % sigma1)
@@ -92,6 +104,10 @@ def main():
     steps = t["step"][-1] - t["step"][0]
     dets = t["detections"][-1] - t["detections"][0]
     check(abs(dets - steps / 50) <= 1, "%d detections in %d steps (every 50)" % (dets, steps))
+    check(len(rows["1"]) >= 4 and rows["auto"] == rows["1"],
+          "every auto gives the table of every 1 to the last digit (%d rows)" % len(rows["1"]))
+    check(0 < detections["auto"] < 0.9 * detections["1"],
+          "every auto detects less: %d against %d" % (detections["auto"], detections["1"]))
     check_frames(check, frames, float(re.search(r"TRIAXIAL compressed: sigma1 = \S+ Pa at H = (\S+) m",
                                                 log).group(1)))
     if check.failures:
