@@ -63,9 +63,9 @@ std::vector<double> write_record(const Definition &def, const RunState &run,
   out.put(flag(run.inertial.was_above));
   out.put(flag(run.warned_inertial));
   out.put(flag(run.warned_chain_step));
-  out.put(static_cast<double>(run.window_steps));
-  out.put(static_cast<double>(run.window_detections));
-  out.put(static_cast<double>(run.unwatched_until));
+  out.put(static_cast<double>(run.dense.window_steps));
+  out.put(static_cast<double>(run.dense.window_detections));
+  out.put(static_cast<double>(run.dense.unwatched_until));
   return out.finish();
 }
 
@@ -104,9 +104,9 @@ std::string read_record(const double *data, std::size_t n, const Definition &def
   run.warned_inertial = in.get() != 0.0;
   run.warned_chain_step = in.get() != 0.0;
   if (in.version() >= 3) {
-    run.window_steps = static_cast<long long>(in.get());
-    run.window_detections = static_cast<long long>(in.get());
-    run.unwatched_until = static_cast<long long>(in.get());
+    run.dense.window_steps = static_cast<long long>(in.get());
+    run.dense.window_detections = static_cast<long long>(in.get());
+    run.dense.unwatched_until = static_cast<long long>(in.get());
   }
   in.finished();
   return in.error();

@@ -57,18 +57,12 @@ bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens det
 
 bool unwatched_step(const RunState &run, long long step)
 {
-  return step < run.unwatched_until;
+  return run.dense.unwatched(step);
 }
 
 bool count_watched_step(RunState &run, long long step, bool detected)
 {
-  run.window_steps++;
-  if (detected) run.window_detections++;
-  if (run.window_steps < DENSE_WINDOW) return false;
-  const bool dense = run.window_detections >= DENSE_DETECTIONS;
-  run.window_steps = run.window_detections = 0;
-  if (dense) run.unwatched_until = step + UNWATCHED_STEPS;
-  return dense;
+  return run.dense.count_watched(step, detected);
 }
 
 void drop_watch(SideChain &s)

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "dense_detections.h"
+
 #include "membrane_chain.h"
 
 namespace membrane {
@@ -29,16 +31,7 @@ constexpr int MAX_WIDENINGS = 2;
 // every auto: relations within this many D50 of their threshold are watched
 // every step; the others may flip only after a band disk moved half as far
 constexpr double WATCH_BUDGET = 0.01;
-// every auto: when at least DENSE_DETECTIONS of DENSE_WINDOW watched steps
-// detected, the next UNWATCHED_STEPS steps detect every step without building
-// the watch, which then costs more than it saves (a long chain has some
-// relation flipping at most steps; at 134 k disks a watched step cost about
-// 1 + 4.7 r ms at a detection rate r, an unwatched one 3.6 ms); then the
-// watch is tried again. The chains are the same either way (every auto =
-// every 1); only the detection count differs.
-constexpr long long DENSE_WINDOW = 100;
-constexpr long long DENSE_DETECTIONS = 70;
-constexpr long long UNWATCHED_STEPS = 500;
+// every auto: DENSE_WINDOW, DENSE_DETECTIONS, UNWATCHED_STEPS (dense_detections.h)
 // |v| dt / r of a chain disk shot by the membrane (quasi-static chains: < 1e-3)
 constexpr double CHAIN_STEP_LIMIT = 0.025;
 constexpr long long INERTIAL_WINDOW = 1000; // steps over which the strain rate is averaged
@@ -173,11 +166,7 @@ struct RunState {
   Counters counters;
   InertialWindow inertial;
   bool warned_inertial = false, warned_chain_step = false;
-  // every auto (see DENSE_WINDOW): the watched steps of the open window and
-  // how many of them detected, and the step before which every step detects
-  // without a watch (-1: none)
-  long long window_steps = 0, window_detections = 0;
-  long long unwatched_until = -1;
+  DenseDetections dense; // every auto: when the watch is not worth building
 };
 
 // every auto: whether `step` detects without a watch (RunState::unwatched_until)

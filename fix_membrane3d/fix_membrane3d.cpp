@@ -187,7 +187,8 @@ void FixMembrane3d::pre_force(int)
   evaluate_inputs();
   bool due = member_tags.empty();
   if (!due && every == AUTO) {
-    due = automatic.can_have_changed(lmp, groupbit, platens, tolerance, members);
+    due = automatic.can_have_changed(lmp, groupbit, platens, tolerance, update->ntimestep,
+                                       members);
   } else if (!due && !(due = update->ntimestep - last_detection >= every)) {
     gather_tags(lmp, member_tags, members);
     due = members.tags.size() != member_tags.size(); // an atom was lost: find it anew
@@ -231,7 +232,7 @@ void FixMembrane3d::detect()
   std::vector<int> index;
   try {
     topology = membrane3d::members_only(
-        every == AUTO ? automatic.detect(all, platens, tolerance)
+        every == AUTO ? automatic.detect(all, platens, tolerance, update->ntimestep)
                       : membrane3d::detect_membrane(all.spheres, platens, tolerance),
         index);
     if (every == AUTO) automatic.set_members(index);

@@ -28,10 +28,16 @@ void group_signature(const GatheredSpheres &g, double out[3])
 } // namespace
 
 membrane3d::MembraneTopology Membrane3dAuto::detect(const GatheredSpheres &all,
-                                                    const membrane3d::Platens &at, double tolerance)
+                                                    const membrane3d::Platens &at, double tolerance,
+                                                    long long step)
 {
-  sample = all;
   platens = at;
+  if (dense.unwatched(step)) { // no watch, and none to build again after a restart
+    built = false;
+    sample = GatheredSpheres();
+    return membrane3d::detect_membrane(all.spheres, platens, tolerance);
+  }
+  sample = all;
   return build(tolerance);
 }
 
@@ -50,6 +56,8 @@ membrane3d::MembraneTopology Membrane3dAuto::build(double tolerance)
 void Membrane3dAuto::set_members(const std::vector<int> &members)
 {
   watched_tags.clear();
+  member_entry.clear();
+  if (!built) return; // detected without a watch
   for (int k : watch.spheres) watched_tags.push_back(sample.tags[k]);
   member_entry.clear();
   for (int k : members)
@@ -58,8 +66,10 @@ void Membrane3dAuto::set_members(const std::vector<int> &members)
 }
 
 bool Membrane3dAuto::can_have_changed(LAMMPS *lmp, int groupbit, const membrane3d::Platens &now,
-                                      double tolerance, GatheredSpheres &members)
+                                      double tolerance, long long step,
+                                      GatheredSpheres &members)
 {
+  if (dense.unwatched(step)) return true;
   if (!built) {
     if (sample.tags.empty()) return true;
     // after a restart: the watch of the detection it carries (the same membrane)
@@ -82,8 +92,10 @@ bool Membrane3dAuto::can_have_changed(LAMMPS *lmp, int groupbit, const membrane3
   if (sums[0] != signature[0] || sums[1] != signature[1] || largest != signature[2]) return true;
 
   gather_tags(lmp, watched_tags, watched);
-  if (watched.tags.size() != watched_tags.size()) return true;
-  if (membrane3d::membrane_can_have_changed(watch, watched.spheres, now)) return true;
+  const bool changed = watched.tags.size() != watched_tags.size() ||
+                       membrane3d::membrane_can_have_changed(watch, watched.spheres, now);
+  dense.count_watched(step, changed);
+  if (changed) return true;
   members.tags.clear();
   members.spheres.clear();
   members.types.clear();
@@ -100,6 +112,9 @@ void Membrane3dAuto::save(membrane3d::Membrane3dState &state) const
   state.sample_tags = sample.tags;
   state.sample = sample.spheres;
   state.sample_platens = platens;
+  state.window_steps = static_cast<double>(dense.window_steps);
+  state.window_detections = static_cast<double>(dense.window_detections);
+  state.unwatched_until = static_cast<double>(dense.unwatched_until);
 }
 
 void Membrane3dAuto::restore(const membrane3d::Membrane3dState &state)
@@ -109,6 +124,9 @@ void Membrane3dAuto::restore(const membrane3d::Membrane3dState &state)
   sample.spheres = state.sample;
   sample.types.assign(sample.tags.size(), 0);
   platens = state.sample_platens;
+  dense.window_steps = static_cast<long long>(state.window_steps);
+  dense.window_detections = static_cast<long long>(state.window_detections);
+  dense.unwatched_until = static_cast<long long>(state.unwatched_until);
 }
 
 double Membrane3dAuto::memory_usage() const

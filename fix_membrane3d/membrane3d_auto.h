@@ -1,8 +1,10 @@
 // fix membrane3d's every auto: the membrane is found again only when it can have
 // changed (detection_watch.h), with the result of a detection at every step. This
 // class keeps the watch of the last detection, gathers the atoms it needs each step
-// and decides; a restart carries the detection's spheres, from which the watch is
-// built again, so that a split run detects when one straight through does.
+// and decides; where the membrane changes at most steps it detects for a while
+// without building the watch (dense_detections.h). A restart carries the detection's
+// spheres, from which the watch is built again, and that schedule, so that a split
+// run detects when one straight through does.
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_AUTO_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_AUTO_H
 
@@ -10,6 +12,7 @@
 
 #include "lammps.h"
 
+#include "dense_detections.h"
 #include "detection_watch.h"
 #include "membrane3d_gather.h"
 #include "membrane3d_record.h"
@@ -18,7 +21,8 @@ class Membrane3dAuto {
  public:
   // a detection on the group's spheres `all` (the whole topology, over all)
   membrane3d::MembraneTopology detect(const GatheredSpheres &all,
-                                      const membrane3d::Platens &platens, double tolerance);
+                                      const membrane3d::Platens &platens, double tolerance,
+                                      long long step);
   // its members (indices into all, ascending: members_only)
   void set_members(const std::vector<int> &members);
 
@@ -26,9 +30,9 @@ class Membrane3dAuto {
   // not, `members` holds the member atoms now. Checks the group (its atoms, their
   // IDs and largest radius) against the detection's.
   bool can_have_changed(LAMMPS_NS::LAMMPS *lmp, int groupbit, const membrane3d::Platens &platens,
-                        double tolerance, GatheredSpheres &members);
+                        double tolerance, long long step, GatheredSpheres &members);
 
-  // restart: the detection's spheres and platens
+  // restart: the detection's spheres and platens, the schedule
   void save(membrane3d::Membrane3dState &state) const;
   void restore(const membrane3d::Membrane3dState &state);
 
@@ -37,6 +41,7 @@ class Membrane3dAuto {
  private:
   membrane3d::DetectionWatch watch;
   bool built = false;
+  DenseDetections dense;
   GatheredSpheres sample;                // the group at the detection
   membrane3d::Platens platens{0.0, 0.0}; // at the detection
   std::vector<int> watched_tags;         // of watch.spheres

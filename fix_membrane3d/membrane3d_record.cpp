@@ -26,6 +26,9 @@ std::vector<double> write_record(const Membrane3dState &s) {
       w.put(v.sphere);
       w.put(v.image);
     }
+  w.put(s.window_steps);
+  w.put(s.window_detections);
+  w.put(s.unwatched_until);
   w.put(s.sample_platens.lo);
   w.put(s.sample_platens.hi);
   w.put(static_cast<double>(s.sample_tags.size()));
@@ -63,6 +66,9 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
     in.topology.facets.push_back(facet);
   }
   if (r.version() >= 2) {
+    in.window_steps = r.get();
+    in.window_detections = r.get();
+    in.unwatched_until = r.get();
     in.sample_platens.lo = r.get();
     in.sample_platens.hi = r.get();
     const std::size_t spheres = r.count(5);

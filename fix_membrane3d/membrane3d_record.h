@@ -24,6 +24,7 @@ struct Membrane3dState {
   std::vector<int> sample_tags;
   std::vector<Sphere> sample;
   Platens sample_platens{0, 0};
+  double window_steps = 0, window_detections = 0, unwatched_until = -1; // DenseDetections
 };
 
 std::vector<double> write_record(const Membrane3dState &state);

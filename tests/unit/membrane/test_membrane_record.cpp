@@ -131,9 +131,9 @@ void sample_state(RunState &run, SideChain (&sides)[2])
   run.inertial.first_height = 0.2;
   run.inertial.was_above = true;
   run.warned_inertial = true;
-  run.window_steps = 7;
-  run.window_detections = 6;
-  run.unwatched_until = 12345;
+  run.dense.window_steps = 7;
+  run.dense.window_detections = 6;
+  run.dense.unwatched_until = 12345;
   sides[LEFT].chain_tags = {3, 1, 4};
   sides[LEFT].escaped_tags = {15};
   sides[LEFT].escaped_radius = {0.001};
@@ -177,9 +177,9 @@ TEST(MembraneRecord, WholeStateRoundTrips)
   EXPECT_TRUE(back.inertial.was_above);
   EXPECT_TRUE(back.warned_inertial);
   EXPECT_FALSE(back.warned_chain_step);
-  EXPECT_EQ(back.window_steps, 7);
-  EXPECT_EQ(back.window_detections, 6);
-  EXPECT_EQ(back.unwatched_until, 12345);
+  EXPECT_EQ(back.dense.window_steps, 7);
+  EXPECT_EQ(back.dense.window_detections, 6);
+  EXPECT_EQ(back.dense.unwatched_until, 12345);
   EXPECT_EQ(back_sides[LEFT].chain_tags, sides[LEFT].chain_tags);
   EXPECT_EQ(back_sides[LEFT].escaped_radius, sides[LEFT].escaped_radius);
   EXPECT_EQ(back_sides[RIGHT].watch_band.size(), 2u);
@@ -231,9 +231,9 @@ TEST(MembraneRecord, FormatTwoIsReadWithoutAWindow)
   EXPECT_TRUE(same);
   EXPECT_EQ(back.counters.detections, 12);
   EXPECT_TRUE(back.warned_inertial);
-  EXPECT_EQ(back.window_steps, 0);
-  EXPECT_EQ(back.window_detections, 0);
-  EXPECT_EQ(back.unwatched_until, -1);
+  EXPECT_EQ(back.dense.window_steps, 0);
+  EXPECT_EQ(back.dense.window_detections, 0);
+  EXPECT_EQ(back.dense.unwatched_until, -1);
   // format 1 is refused (EarlierFormatIsRefused), and so is format 2 cut short
   rec.pop_back();
   rec[2] = static_cast<double>(rec.size());

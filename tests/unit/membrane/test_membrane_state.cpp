@@ -218,18 +218,18 @@ TEST(MembraneState, ADenseWindowSwitchesTheWatchOffForAWhile)
   // one detection short of dense: the window closes and a new one opens
   for (long long k = 0; k < DENSE_WINDOW; k++)
     EXPECT_FALSE(count_watched_step(run, step++, k >= DENSE_WINDOW - DENSE_DETECTIONS + 1));
-  EXPECT_EQ(run.window_steps, 0);
-  EXPECT_EQ(run.window_detections, 0);
+  EXPECT_EQ(run.dense.window_steps, 0);
+  EXPECT_EQ(run.dense.window_detections, 0);
   EXPECT_FALSE(unwatched_step(run, step));
   // exactly DENSE_DETECTIONS of DENSE_WINDOW, spread over the window
   const long long n = DENSE_DETECTIONS - 1, m = DENSE_WINDOW - 1;
   for (long long k = 0; k < m; k++)
     EXPECT_FALSE(count_watched_step(run, step++, (k + 1) * n / m != k * n / m));
-  EXPECT_EQ(run.window_detections + 1, DENSE_DETECTIONS);
+  EXPECT_EQ(run.dense.window_detections + 1, DENSE_DETECTIONS);
   const long long last = step;
   EXPECT_TRUE(count_watched_step(run, step, true));
-  EXPECT_EQ(run.window_steps, 0);
-  EXPECT_EQ(run.unwatched_until, last + UNWATCHED_STEPS);
+  EXPECT_EQ(run.dense.window_steps, 0);
+  EXPECT_EQ(run.dense.unwatched_until, last + UNWATCHED_STEPS);
   EXPECT_TRUE(unwatched_step(run, last + 1));
   EXPECT_TRUE(unwatched_step(run, last + UNWATCHED_STEPS - 1));
   EXPECT_FALSE(unwatched_step(run, last + UNWATCHED_STEPS)); // the watch is tried again

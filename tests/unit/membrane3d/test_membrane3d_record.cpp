@@ -18,6 +18,12 @@ Membrane3dState sample_state() {
   s.member_tags = {3, 9, 12, 40};
   s.topology.side = {Side::surface, Side::surface, Side::outside, Side::surface};
   s.topology.facets = {{{{0, 0}, {1, -1}, {3, 1}}}};
+  s.window_steps = 40;
+  s.window_detections = 31;
+  s.unwatched_until = -1;
+  s.sample_platens = {0.0, 0.02};
+  s.sample_tags = {3, 9};
+  s.sample = {{Eigen::Vector3d(1e-3, 2e-3, 3e-3), 5e-4}, {Eigen::Vector3d(-1e-3, 0.0, 7e-3), 6e-4}};
   return s;
 }
 
@@ -38,6 +44,27 @@ TEST(Membrane3dRecord, RoundTrip) {
   EXPECT_EQ(back.topology.facets[0][1].image, -1);
   EXPECT_EQ(back.topology.facets[0][2].sphere, 3);
   EXPECT_EQ(back.topology.facets[0][2].image, 1);
+  EXPECT_EQ(back.window_steps, 40);
+  EXPECT_EQ(back.window_detections, 31);
+  EXPECT_EQ(back.unwatched_until, -1);
+  EXPECT_EQ(back.sample_platens.hi, 0.02);
+  EXPECT_EQ(back.sample_tags, (std::vector<int>{3, 9}));
+  ASSERT_EQ(back.sample.size(), 2u);
+  EXPECT_EQ(back.sample[1].x.z(), 7e-3);
+  EXPECT_EQ(back.sample[1].r, 6e-4);
+}
+
+// A record of version 1 (before every auto: no schedule, no spheres) is read.
+TEST(Membrane3dRecord, VersionOneIsRead) {
+  auto rec = membrane3d::write_record(sample_state());
+  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5)); // the version-2 tail
+  rec[1] = 1;
+  rec[2] = static_cast<double>(rec.size());
+  Membrane3dState back;
+  ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
+  EXPECT_EQ(back.member_tags, (std::vector<int>{3, 9, 12, 40}));
+  EXPECT_TRUE(back.sample.empty());
+  EXPECT_EQ(back.unwatched_until, -1);
 }
 
 TEST(Membrane3dRecord, CutOrCorruptIsRefused) {
@@ -45,7 +72,7 @@ TEST(Membrane3dRecord, CutOrCorruptIsRefused) {
   Membrane3dState back;
   EXPECT_NE(membrane3d::read_record(rec.data(), rec.size() - 1, back), "");  // cut
   auto bad = rec;
-  bad.back() = 9;  // the last vertex's image: 9 is none of -1, 0, 1
+  bad[3 + 4 + 1 + 4 * 2 + 1 + 5] = 9;  // the last vertex's image: 9 is none of -1, 0, 1
   EXPECT_NE(membrane3d::read_record(bad.data(), bad.size(), back), "");
   bad = rec;
   bad[0] = 1.0;  // another style's magic number
