@@ -3,9 +3,11 @@
 # (in.cuboid_prepare), shear each with four servo-controlled side walls and with fix
 # membrane3d (in.cuboid_shear), then tabulate and plot (compare_boundaries.py).
 #   examples/triaxial/run_comparison.sh [--quick] [--np N] [--seeds "S1 S2 ..."] [--frictionless T]
+#                                       [--width W]
 # Default: 3 seeds, 36 mm cuboids of about 4 000 spheres, about 5 minutes per seed on
 # 2 cores; --quick: 16 mm cuboids of about 400 spheres, 2 seeds, about a minute each;
-# --frictionless 2: the membrane spheres wear the frictionless type 2 (contacts.inc).
+# --frictionless 2: the membrane spheres wear the frictionless type 2 (contacts.inc);
+# --width W: cuboids W metres wide (and 2 W high), written to out/comparison_W/.
 # Writes out/comparison/: per seed the prepared sample, each shear's .txt and log,
 # the membrane's VTK frames (ParaView: membrane_SEED_membrane.pvd), comparison.md
 # and comparison.png.
@@ -18,6 +20,7 @@ W=0.036
 size=()
 vtkevery=2500
 frictionless=0
+suffix=
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) W=0.016; size=(-var hfill 0.06 -var nsettle 8000 -var ncompress 12000)
@@ -25,11 +28,13 @@ while [ $# -gt 0 ]; do
     --np) np=$2; shift ;;
     --seeds) seeds=$2; shift ;;
     --frictionless) frictionless=$2; shift ;;
-    *) echo "usage: $0 [--quick] [--np N] [--seeds \"S1 S2 ...\"] [--frictionless T]"; exit 2 ;;
+    --width) W=$2; suffix=_$2; shift
+             size=(-var hfill "$(awk -v w="$W" 'BEGIN { print w * 0.16 / 0.036 }')") ;;
+    *) echo "usage: $0 [--quick] [--np N] [--seeds \"S1 S2 ...\"] [--frictionless T] [--width W]"; exit 2 ;;
   esac
   shift
 done
-out=$root/out/comparison
+out=$root/out/comparison$suffix
 mkdir -p "$out"
 cd "$here"
 run() { # log, then the arguments of liggghts-membrane
