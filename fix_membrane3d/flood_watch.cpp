@@ -14,6 +14,10 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
+// The cells watched: the flooded ones and this many rings of cells around them (the
+// buffer, and the ring that keeps the buffer's neighbours: flood_watch.h).
+constexpr int kRings = 2;
+
 // A side that the watch does not decide: counts as changed.
 constexpr int kUndecided = 2;
 
@@ -248,11 +252,16 @@ class WatchBuilder {
     // the flood's choice of the sample among dry groups could change with flips of
     // unwatched cells only if another group came near it in size
     if (n == 0 || cells_.kept_group <= 4 * cells_.other_group) return watch_;
+    // the buffer, and the ring of cells around it (see flood_watch.h)
     std::vector<char> buffer(n, 0), oriented(n, 0);
-    for (std::size_t c = 0; c < n; ++c) {
-      if (!cells_.flooded[c]) continue;
-      buffer[c] = 1;
-      for (int n_c : cells_.neighbour[c]) buffer[n_c] = 1;
+    for (std::size_t c = 0; c < n; ++c)
+      if (cells_.flooded[c]) buffer[c] = 1;
+    for (int ring = 0; ring < kRings; ++ring) {
+      std::vector<char> grown = buffer;
+      for (std::size_t c = 0; c < n; ++c)
+        if (buffer[c])
+          for (int n_c : cells_.neighbour[c]) grown[n_c] = 1;
+      buffer.swap(grown);
     }
     for (std::size_t c = 0; c < n; ++c) {
       if (!buffer[c]) continue;

@@ -11,7 +11,15 @@
 // neighbour's far vertex outside the cell's power sphere) and the convexity of the
 // hull between two infinite cells; the flood holds while the links on the facets of
 // the flooded cells hold; a sphere that is no vertex stays so, in its cell, while its
-// own power test and orientations hold.
+// own power test and orientations hold. The certificates of a buffer cell are tests
+// against its neighbours' far vertices; a flip just beyond the buffer would give it
+// another neighbour, whose far vertex it is not tested against, so the ring of cells
+// around the buffer is watched too (every facet of it). What is left unwatched is a
+// chain of two flips beyond that ring followed by a point entering a buffer cell's
+// power sphere: argued away by the power spheres' nesting (on the far side of a
+// regular facet a cell's power sphere lies inside its neighbour's), not proven; the
+// tests compare with fresh detections (tests/unit/membrane3d, tests/scripts,
+// tests/examples).
 //
 // A certificate whose sign cannot change while no point moves by `budget` (bounded
 // from its cofactors, with the remainder by Hadamard's inequality) is not evaluated
