@@ -29,8 +29,10 @@
 // lexicographic order). Tests that are zero by the images' symmetry (a cell with a
 // sphere and its image has its power sphere centred in the platen plane, so the image
 // of any of its other vertices lies on it; a sphere's images stand on one vertical
-// line with it) are known to be zero and not evaluated; any other zero test (a
-// lattice) counts as changed.
+// line with it) are known to be zero and not evaluated; any other zero (a lattice's
+// cospherical spheres) is found by the exact predicate and decided by the same
+// perturbation. A cell's orientation of zero, or a collinear hull facet (CGAL's
+// power segment, not followed here), counts as changed.
 #ifndef LIGGGHTS_MEMBRANE_FLOOD_WATCH_H
 #define LIGGGHTS_MEMBRANE_FLOOD_WATCH_H
 
