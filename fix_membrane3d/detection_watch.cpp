@@ -15,7 +15,7 @@ MembraneTopology detect_watched_membrane(const std::vector<Sphere> &spheres, con
   watch.flood = watch_flood(cells, m.spheres, m.sealed, {m.original, m.image}, tolerance, budget);
   watch.grid = m.grid;
   watch.platens = platens;
-  watch.band = image_band(spheres, tolerance);
+  watch.band = m.band;
   watch.budget = budget;
   // the spheres of the flood's points and of the membrane (its members are among
   // them: a sphere on a facet or outside is a vertex of a flooded cell, or hidden)

@@ -26,10 +26,8 @@ Eigen::Vector3d mirrored_position(const Eigen::Vector3d &x, int image, const Pla
                                   double grid)
 {
   auto on_grid = [grid](double z) { return std::nearbyint(z / grid) * grid; };
-  Eigen::Vector3d y = x;
-  y.z() = on_grid(x.z());
-  if (image != 0) y.z() = 2 * on_grid(image < 0 ? p.lo : p.hi) - y.z();
-  return y;
+  const Eigen::Vector3d y(x.x(), x.y(), on_grid(x.z()));
+  return image_position(y, image, {on_grid(p.lo), on_grid(p.hi)});
 }
 
 double image_band(const std::vector<Sphere> &spheres, double tolerance)
@@ -42,9 +40,9 @@ double image_band(const std::vector<Sphere> &spheres, double tolerance)
 Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
                            double tolerance)
 {
-  const double band = image_band(spheres, tolerance);
   Mirrored m;
-  m.grid = height_grid(platens, band);
+  m.band = image_band(spheres, tolerance);
+  m.grid = height_grid(platens, m.band);
   auto add = [&m, &platens](const Sphere &s, int i, int image) {
     m.spheres.push_back({mirrored_position(s.x, image, platens, m.grid), s.r});
     m.sealed.push_back(image != 0);
@@ -54,8 +52,8 @@ Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &pl
   for (std::size_t i = 0; i < spheres.size(); ++i) add(spheres[i], static_cast<int>(i), 0);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const Sphere &s = spheres[i];
-    if (imaged_below(s.x.z(), platens, band)) add(s, static_cast<int>(i), -1);
-    if (imaged_above(s.x.z(), platens, band)) add(s, static_cast<int>(i), +1);
+    if (imaged_below(s.x.z(), platens, m.band)) add(s, static_cast<int>(i), -1);
+    if (imaged_above(s.x.z(), platens, m.band)) add(s, static_cast<int>(i), +1);
   }
   return m;
 }

@@ -46,6 +46,7 @@ inline bool imaged_above(double z, const Platens &p, double band)
 // The spheres and their images; entry k is sphere original[k] or its image in the
 // lower (-1) or upper (+1) platen, sealed (exterior_flood.h) when an image.
 struct Mirrored {
+  double band = 0;             // image_band
   double grid = 0;             // height_grid
   std::vector<Sphere> spheres; // at mirrored_position
   std::vector<bool> sealed;
