@@ -66,7 +66,8 @@ public:
     keep_largest_dry_group();
   }
 
-  Boundary boundary() const {
+  // With `cells`, also the triangulation, its flood and the hidden spheres.
+  Boundary boundary(FloodCells *cells) const {
     Boundary b;
     for (Cell c : cells_) {
       if (flooded_[c->info()]) continue;
@@ -76,7 +77,8 @@ public:
     }
     for (auto &f : b.facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
     std::sort(b.facets.begin(), b.facets.end());
-    b.side = sides();
+    b.side = sides(cells);
+    if (cells) export_cells(*cells);
     return b;
   }
 
@@ -90,8 +92,6 @@ public:
         out.neighbour[c->info()][k] = c->neighbor(k)->info();
       }
     out.flooded = flooded_;
-    out.hidden = hidden_;
-    out.hidden_cell = hidden_cell_;
     out.kept_group = kept_group_;
     out.other_group = other_group_;
   }
@@ -103,7 +103,6 @@ private:
   Triangulation triangulation_;
   std::vector<Cell> cells_;      // by cell info
   std::vector<char> flooded_;    // by cell info
-  mutable std::vector<int> hidden_, hidden_cell_; // found by sides()
   long kept_group_ = 0, other_group_ = 0;
 
   bool finite(Vertex v) const { return !triangulation_.is_infinite(v); }
@@ -209,9 +208,8 @@ private:
   // Per sphere: on the membrane when its cells are both flooded and not, outside when
   // all are flooded. A sphere hidden by the power triangulation (inside the power balls
   // of its neighbours) takes the side of the cell that contains its centre.
-  std::vector<Side> sides() const {
-    hidden_.clear();
-    hidden_cell_.clear();
+  // With `cells`, the spheres that are no vertex and their cells go to it.
+  std::vector<Side> sides(FloodCells *cells) const {
     std::vector<char> wet(spheres_.size(), 0), dry(spheres_.size(), 0), seen(spheres_.size(), 0);
     for (Cell c : cells_)
       for (int k = 0; k < 4; ++k) {
@@ -227,8 +225,10 @@ private:
         const Cell c = triangulation_.locate(
             K::Weighted_point_3(K::Point_3(s.x.x(), s.x.y(), s.x.z()), s.r * s.r));
         side[i] = flooded_[c->info()] ? Side::outside : Side::inside;
-        hidden_.push_back(static_cast<int>(i));
-        hidden_cell_.push_back(c->info());
+        if (cells) {
+          cells->hidden.push_back(static_cast<int>(i));
+          cells->hidden_cell.push_back(c->info());
+        }
       } else if (wet[i]) {
         side[i] = dry[i] ? Side::surface : Side::outside;
       }
@@ -242,10 +242,8 @@ private:
 Boundary exterior_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                            double tolerance, FloodCells *cells) {
   check_input(spheres, sealed, tolerance);
-  const Flood flood(spheres, sealed, tolerance);
-  Boundary b = flood.boundary();
-  if (cells) flood.export_cells(*cells);
-  return b;
+  if (cells) *cells = FloodCells();
+  return Flood(spheres, sealed, tolerance).boundary(cells);
 }
 
 } // namespace membrane3d
