@@ -186,10 +186,12 @@ void FixMembrane3d::pre_force(int)
 {
   evaluate_inputs();
   bool due = member_tags.empty();
-  if (!due && every == AUTO) {
+  if (!due && every == AUTO)
     due = automatic.can_have_changed(lmp, groupbit, platens, tolerance, update->ntimestep,
-                                       members);
-  } else if (!due && !(due = update->ntimestep - last_detection >= every)) {
+                                     members);
+  else if (!due)
+    due = update->ntimestep - last_detection >= every;
+  if (!due && every != AUTO) {
     gather_tags(lmp, member_tags, members);
     due = members.tags.size() != member_tags.size(); // an atom was lost: find it anew
   }
