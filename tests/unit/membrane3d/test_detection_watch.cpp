@@ -57,10 +57,7 @@ bool same(const MembraneTopology &a, const MembraneTopology &b)
 TEST(DetectionWatch, UnmovedSpheresKeepTheirMembrane)
 {
   const WatchedSample sample(kFarPlatens);
-  const auto &s = sample.s;
-  const auto &w = sample.w;
-  const auto &t = sample.t;
-  const double d = sample.d;
+  const auto &[s, d, w, t] = sample;
   ASSERT_FALSE(w.flood.always);
   EXPECT_TRUE(same(t, membrane3d::detect_membrane(s, kFarPlatens, 0.7 * d)));
   EXPECT_FALSE(membrane3d::membrane_can_have_changed(w, watched(w, s), kFarPlatens));
@@ -132,10 +129,7 @@ TEST(DetectionWatch, LatticeDecidedAsCgalPerturbs)
 TEST(DetectionWatch, DegenerateAtThePlatens)
 {
   const WatchedSample sample(kSamplePlatensAt);
-  const auto &s = sample.s;
-  const auto &w = sample.w;
-  const auto &t = sample.t;
-  const double d = sample.d;
+  const auto &[s, d, w, t] = sample;
   ASSERT_FALSE(w.flood.always);
   int by_images = 0;
   for (std::size_t k = 0; k < w.flood.side.size(); ++k) {
