@@ -1,11 +1,6 @@
 #include "exterior_flood.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Regular_triangulation_3.h>
-#include <CGAL/Regular_triangulation_cell_base_3.h>
-#include <CGAL/Regular_triangulation_vertex_base_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include "power_flood.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,18 +12,9 @@ namespace membrane3d {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K,
-                                                       CGAL::Regular_triangulation_vertex_base_3<K>>;
-using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K,
-                                                     CGAL::Regular_triangulation_cell_base_3<K>>;
-using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
-using Triangulation = CGAL::Regular_triangulation_3<K, Tds>;
-using Cell = Triangulation::Cell_handle;
-using Vertex = Triangulation::Vertex_handle;
-
 void check_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                 double tolerance) {
+                 double tolerance)
+{
   if (spheres.size() < 4)
     throw std::invalid_argument(std::to_string(spheres.size()) +
                                 " spheres: a surface needs at least four");
@@ -41,209 +27,210 @@ void check_input(const std::vector<Sphere> &spheres, const std::vector<bool> &se
   for (std::size_t i = 0; i < spheres.size(); ++i)
     if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
       throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
-                                  std::to_string(spheres[i].r) +
-                                  " or a centre that is not finite");
+                                  std::to_string(spheres[i].r) + " or a centre that is not finite");
 }
 
-class Flood {
-public:
-  Flood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed, double tolerance)
-      : spheres_(spheres), sealed_(sealed), tolerance_(tolerance) {
-    std::vector<std::pair<K::Weighted_point_3, int>> points;
-    points.reserve(spheres.size());
-    for (std::size_t i = 0; i < spheres.size(); ++i) {
-      const Sphere &s = spheres[i];
-      points.emplace_back(K::Weighted_point_3(K::Point_3(s.x.x(), s.x.y(), s.x.z()), s.r * s.r),
-                          static_cast<int>(i));
-    }
-    triangulation_.insert(points.begin(), points.end());
-    for (auto c = triangulation_.all_cells_begin(); c != triangulation_.all_cells_end(); ++c) {
-      c->info() = static_cast<int>(cells_.size());
-      cells_.push_back(c);
-    }
-    flooded_.assign(cells_.size(), 0);
-    flood_from_outside();
-    keep_largest_dry_group();
+} // namespace
+
+using power::Cell;
+using power::Vertex;
+
+void check_flood_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
+                       double tolerance)
+{
+  check_input(spheres, sealed, tolerance);
+}
+
+PowerFlood::PowerFlood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
+                       double tolerance)
+  : spheres_(spheres), sealed_(sealed), tolerance_(tolerance)
+{
+  std::vector<std::pair<power::K::Weighted_point_3, int>> points;
+  points.reserve(spheres.size());
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    points.emplace_back(power::weighted_point(spheres[i]), static_cast<int>(i));
+  triangulation_.insert(points.begin(), points.end());
+  for (auto c = triangulation_.all_cells_begin(); c != triangulation_.all_cells_end(); ++c) {
+    c->info() = static_cast<int>(cells_.size());
+    cells_.push_back(c);
   }
+  flooded_.assign(cells_.size(), 0);
+  flood_from_outside();
+  keep_largest_dry_group();
+}
 
-  // With `cells`, also the triangulation, its flood and the hidden spheres.
-  Boundary boundary(FloodCells *cells) const {
-    Boundary b;
-    for (Cell c : cells_) {
-      if (flooded_[c->info()]) continue;
-      for (int k = 0; k < 4; ++k)
-        if (flooded_[c->neighbor(k)->info()] && !ignored_facet(c, k))
-          b.facets.push_back(outward_facet(c, k));
-    }
-    for (auto &f : b.facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    std::sort(b.facets.begin(), b.facets.end());
-    b.side = sides(cells);
-    if (cells) export_cells(*cells);
-    return b;
+Boundary PowerFlood::boundary(FloodCells *cells) const
+{
+  Boundary b;
+  for (Cell c : cells_) {
+    if (flooded_[c->info()]) continue;
+    for (int k = 0; k < 4; ++k)
+      if (flooded_[c->neighbor(k)->info()] && !ignored_facet(c, k))
+        b.facets.push_back(outward_facet(c, k));
   }
+  for (auto &f : b.facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  std::sort(b.facets.begin(), b.facets.end());
+  b.side = sides(cells);
+  if (cells) export_cells(*cells);
+  return b;
+}
 
-  void export_cells(FloodCells &out) const {
-    out.vertex.resize(cells_.size());
-    out.neighbour.resize(cells_.size());
-    for (Cell c : cells_)
-      for (int k = 0; k < 4; ++k) {
-        const Vertex v = c->vertex(k);
-        out.vertex[c->info()][k] = finite(v) ? v->info() : -1;
-        out.neighbour[c->info()][k] = c->neighbor(k)->info();
-      }
-    out.flooded = flooded_;
-    out.kept_group = kept_group_;
-    out.other_group = other_group_;
-  }
-
-private:
-  const std::vector<Sphere> &spheres_;
-  const std::vector<bool> &sealed_;
-  double tolerance_;
-  Triangulation triangulation_;
-  std::vector<Cell> cells_;      // by cell info
-  std::vector<char> flooded_;    // by cell info
-  long kept_group_ = 0, other_group_ = 0;
-
-  bool finite(Vertex v) const { return !triangulation_.is_infinite(v); }
-
-  // Across a platen (an edge with a sealed sphere) the tolerance doubles: a sphere and
-  // its image are then linked when the sphere is within T of the platen.
-  bool linked(Vertex a, Vertex b) const {
-    const bool across = sealed_[a->info()] || sealed_[b->info()];
-    const Sphere &p = spheres_[a->info()], &q = spheres_[b->info()];
-    return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance_ : tolerance_);
-  }
-
-  // The facet of c opposite its vertex k: a wall when its three edges are links.
-  bool wall(Cell c, int k) const {
-    const Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3), d = c->vertex((k + 3) & 3);
-    return finite(a) && finite(b) && finite(d) && linked(a, b) && linked(b, d) && linked(a, d);
-  }
-
-  bool all_sealed(Cell c) const {
+void PowerFlood::export_cells(FloodCells &out) const
+{
+  out.vertex.resize(cells_.size());
+  out.neighbour.resize(cells_.size());
+  for (Cell c : cells_)
     for (int k = 0; k < 4; ++k) {
       const Vertex v = c->vertex(k);
-      if (finite(v) && !sealed_[v->info()]) return false;
+      out.vertex[c->info()][k] = finite(v) ? v->info() : -1;
+      out.neighbour[c->info()][k] = c->neighbor(k)->info();
     }
-    return true;
-  }
+  out.flooded = flooded_;
+  out.kept_group = kept_group_;
+  out.other_group = other_group_;
+}
 
-  // A facet with the infinite vertex or only sealed spheres is no part of the membrane.
-  bool ignored_facet(Cell c, int k) const {
-    bool any_unsealed = false;
-    for (int j = 1; j < 4; ++j) {
-      const Vertex v = c->vertex((k + j) & 3);
-      if (!finite(v)) return true;
-      any_unsealed = any_unsealed || !sealed_[v->info()];
+// Across a platen (an edge with a sealed sphere) the tolerance doubles: a sphere and
+// its image are then linked when the sphere is within T of the platen.
+bool PowerFlood::linked(Vertex a, Vertex b) const
+{
+  const bool across = sealed_[a->info()] || sealed_[b->info()];
+  const Sphere &p = spheres_[a->info()], &q = spheres_[b->info()];
+  return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance_ : tolerance_);
+}
+
+// The facet of c opposite its vertex k: a wall when its three edges are links.
+bool PowerFlood::wall(Cell c, int k) const
+{
+  const Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3), d = c->vertex((k + 3) & 3);
+  return finite(a) && finite(b) && finite(d) && linked(a, b) && linked(b, d) && linked(a, d);
+}
+
+bool PowerFlood::all_sealed(Cell c) const
+{
+  for (int k = 0; k < 4; ++k) {
+    const Vertex v = c->vertex(k);
+    if (finite(v) && !sealed_[v->info()]) return false;
+  }
+  return true;
+}
+
+// A facet with the infinite vertex or only sealed spheres is no part of the membrane.
+bool PowerFlood::ignored_facet(Cell c, int k) const
+{
+  bool any_unsealed = false;
+  for (int j = 1; j < 4; ++j) {
+    const Vertex v = c->vertex((k + j) & 3);
+    if (!finite(v)) return true;
+    any_unsealed = any_unsealed || !sealed_[v->info()];
+  }
+  return !any_unsealed;
+}
+
+void PowerFlood::flood_from_outside()
+{
+  std::vector<Cell> front;
+  for (Cell c : cells_)
+    if (triangulation_.is_infinite(c) && !all_sealed(c)) {
+      flooded_[c->info()] = 1;
+      front.push_back(c);
     }
-    return !any_unsealed;
+  while (!front.empty()) {
+    const Cell c = front.back();
+    front.pop_back();
+    for (int k = 0; k < 4; ++k) {
+      const Cell n = c->neighbor(k);
+      if (flooded_[n->info()] || all_sealed(n) || wall(c, k)) continue;
+      flooded_[n->info()] = 1;
+      front.push_back(n);
+    }
   }
+}
 
-  void flood_from_outside() {
-    std::vector<Cell> front;
-    for (Cell c : cells_)
-      if (triangulation_.is_infinite(c) && !all_sealed(c)) {
-        flooded_[c->info()] = 1;
-        front.push_back(c);
-      }
+// Unflooded cells in groups joined by facets; all but the group with the most cells
+// that hold an unsealed sphere are flooded (lowest group first among equals).
+void PowerFlood::keep_largest_dry_group()
+{
+  std::vector<int> group(cells_.size(), -1);
+  std::vector<long> size;
+  for (Cell seed : cells_) {
+    if (flooded_[seed->info()] || group[seed->info()] >= 0) continue;
+    const int g = static_cast<int>(size.size());
+    size.push_back(0);
+    std::vector<Cell> front{seed};
+    group[seed->info()] = g;
     while (!front.empty()) {
       const Cell c = front.back();
       front.pop_back();
+      if (!all_sealed(c)) ++size[g];
       for (int k = 0; k < 4; ++k) {
         const Cell n = c->neighbor(k);
-        if (flooded_[n->info()] || all_sealed(n) || wall(c, k)) continue;
-        flooded_[n->info()] = 1;
+        if (flooded_[n->info()] || group[n->info()] >= 0) continue;
+        group[n->info()] = g;
         front.push_back(n);
       }
     }
   }
+  int keep = 0;
+  for (std::size_t g = 1; g < size.size(); ++g)
+    if (size[g] > size[keep]) keep = static_cast<int>(g);
+  for (std::size_t g = 0; g < size.size(); ++g)
+    if (static_cast<int>(g) == keep)
+      kept_group_ = size[g];
+    else
+      other_group_ = std::max(other_group_, size[g]);
+  for (std::size_t i = 0; i < cells_.size(); ++i)
+    if (!flooded_[i] && group[i] != keep) flooded_[i] = 1;
+}
 
-  // Unflooded cells in groups joined by facets; all but the group with the most cells
-  // that hold an unsealed sphere are flooded (lowest group first among equals).
-  void keep_largest_dry_group() {
-    std::vector<int> group(cells_.size(), -1);
-    std::vector<long> size;
-    for (Cell seed : cells_) {
-      if (flooded_[seed->info()] || group[seed->info()] >= 0) continue;
-      const int g = static_cast<int>(size.size());
-      size.push_back(0);
-      std::vector<Cell> front{seed};
-      group[seed->info()] = g;
-      while (!front.empty()) {
-        const Cell c = front.back();
-        front.pop_back();
-        if (!all_sealed(c)) ++size[g];
-        for (int k = 0; k < 4; ++k) {
-          const Cell n = c->neighbor(k);
-          if (flooded_[n->info()] || group[n->info()] >= 0) continue;
-          group[n->info()] = g;
-          front.push_back(n);
-        }
-      }
+// The facet of the unflooded cell c opposite vertex k, counter-clockwise seen from
+// the flooded side (the vertex k is on the negative side of its normal).
+std::array<int, 3> PowerFlood::outward_facet(Cell c, int k) const
+{
+  Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3);
+  const Vertex d = c->vertex((k + 3) & 3), inner = c->vertex(k);
+  if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
+                        inner->point().point()) == CGAL::POSITIVE)
+    std::swap(a, b);
+  return {a->info(), b->info(), d->info()};
+}
+
+// Per sphere: on the membrane when its cells are both flooded and not, outside when
+// all are flooded. A sphere hidden by the power triangulation (inside the power balls
+// of its neighbours) takes the side of the cell that contains its centre.
+// With `cells`, the spheres that are no vertex and their cells go to it.
+std::vector<Side> PowerFlood::sides(FloodCells *cells) const
+{
+  std::vector<char> wet(spheres_.size(), 0), dry(spheres_.size(), 0), seen(spheres_.size(), 0);
+  for (Cell c : cells_)
+    for (int k = 0; k < 4; ++k) {
+      const Vertex v = c->vertex(k);
+      if (!finite(v)) continue;
+      seen[v->info()] = 1;
+      (flooded_[c->info()] ? wet : dry)[v->info()] = 1;
     }
-    int keep = 0;
-    for (std::size_t g = 1; g < size.size(); ++g)
-      if (size[g] > size[keep]) keep = static_cast<int>(g);
-    for (std::size_t g = 0; g < size.size(); ++g)
-      if (static_cast<int>(g) == keep)
-        kept_group_ = size[g];
-      else
-        other_group_ = std::max(other_group_, size[g]);
-    for (std::size_t i = 0; i < cells_.size(); ++i)
-      if (!flooded_[i] && group[i] != keep) flooded_[i] = 1;
-  }
-
-  // The facet of the unflooded cell c opposite vertex k, counter-clockwise seen from
-  // the flooded side (the vertex k is on the negative side of its normal).
-  std::array<int, 3> outward_facet(Cell c, int k) const {
-    Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3);
-    const Vertex d = c->vertex((k + 3) & 3), inner = c->vertex(k);
-    if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
-                          inner->point().point()) == CGAL::POSITIVE)
-      std::swap(a, b);
-    return {a->info(), b->info(), d->info()};
-  }
-
-  // Per sphere: on the membrane when its cells are both flooded and not, outside when
-  // all are flooded. A sphere hidden by the power triangulation (inside the power balls
-  // of its neighbours) takes the side of the cell that contains its centre.
-  // With `cells`, the spheres that are no vertex and their cells go to it.
-  std::vector<Side> sides(FloodCells *cells) const {
-    std::vector<char> wet(spheres_.size(), 0), dry(spheres_.size(), 0), seen(spheres_.size(), 0);
-    for (Cell c : cells_)
-      for (int k = 0; k < 4; ++k) {
-        const Vertex v = c->vertex(k);
-        if (!finite(v)) continue;
-        seen[v->info()] = 1;
-        (flooded_[c->info()] ? wet : dry)[v->info()] = 1;
+  std::vector<Side> side(spheres_.size(), Side::inside);
+  for (std::size_t i = 0; i < spheres_.size(); ++i) {
+    if (!seen[i]) {
+      const Cell c = triangulation_.locate(power::weighted_point(spheres_[i]));
+      side[i] = flooded_[c->info()] ? Side::outside : Side::inside;
+      if (cells) {
+        cells->hidden.push_back(static_cast<int>(i));
+        cells->hidden_cell.push_back(c->info());
       }
-    std::vector<Side> side(spheres_.size(), Side::inside);
-    for (std::size_t i = 0; i < spheres_.size(); ++i) {
-      if (!seen[i]) {
-        const Sphere &s = spheres_[i];
-        const Cell c = triangulation_.locate(
-            K::Weighted_point_3(K::Point_3(s.x.x(), s.x.y(), s.x.z()), s.r * s.r));
-        side[i] = flooded_[c->info()] ? Side::outside : Side::inside;
-        if (cells) {
-          cells->hidden.push_back(static_cast<int>(i));
-          cells->hidden_cell.push_back(c->info());
-        }
-      } else if (wet[i]) {
-        side[i] = dry[i] ? Side::surface : Side::outside;
-      }
+    } else if (wet[i]) {
+      side[i] = dry[i] ? Side::surface : Side::outside;
     }
-    return side;
   }
-};
-
-} // namespace
+  return side;
+}
 
 Boundary exterior_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                           double tolerance, FloodCells *cells) {
+                           double tolerance, FloodCells *cells)
+{
   check_input(spheres, sealed, tolerance);
   if (cells) *cells = FloodCells();
-  return Flood(spheres, sealed, tolerance).boundary(cells);
+  return PowerFlood(spheres, sealed, tolerance).boundary(cells);
 }
 
 } // namespace membrane3d
