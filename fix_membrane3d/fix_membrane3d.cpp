@@ -26,6 +26,7 @@
 #include "frictionless_type.h"
 #include "membrane3d_checks.h"
 #include "membrane3d_record.h"
+#include "membrane3d_skin.h"
 #include "style_args.h"
 
 using namespace LAMMPS_NS;
@@ -234,8 +235,8 @@ void FixMembrane3d::detect()
   std::vector<int> index;
   try {
     topology = membrane3d::members_only(
-        every == AUTO ? automatic.detect(all, platens, tolerance, update->ntimestep)
-                      : membrane3d::detect_membrane(all.spheres, platens, tolerance),
+        every == AUTO ? automatic.detect(all, member_tags, platens, tolerance, update->ntimestep)
+                      : detect_near_members(all, member_tags, platens, tolerance),
         index);
     if (every == AUTO) automatic.set_members(index);
   } catch (const std::exception &e) {

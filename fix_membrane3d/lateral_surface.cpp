@@ -1,5 +1,7 @@
 #include "lateral_surface.h"
 
+#include "skin_flood.h"
+
 
 #include <algorithm>
 #include <cmath>
@@ -144,6 +146,25 @@ void check_platens(const std::vector<Sphere> &spheres, const Platens &p)
                                   std::to_string(spheres[i].x.z()) + " is not between the platens");
 }
 
+// The topology of the boundary of the spheres' flood with their images `m`.
+MembraneTopology topology_of(const Boundary &boundary, const Mirrored &m, std::size_t n_spheres,
+                             double tolerance)
+{
+  if (boundary.facets.empty())
+    throw std::runtime_error("no surface: no facet of links between the platens separates the " +
+                             std::to_string(n_spheres) +
+                             " spheres from the outside (are they a packing? tolerance " +
+                             std::to_string(tolerance) + ")");
+  MembraneTopology t;
+  for (const auto &f : boundary.facets) {
+    std::array<MembraneVertex, 3> facet;
+    for (int j = 0; j < 3; ++j) facet[j] = {m.original[f[j]], m.image[f[j]]};
+    t.facets.push_back(facet);
+  }
+  t.side.assign(boundary.side.begin(), boundary.side.begin() + n_spheres);
+  return t;
+}
+
 } // namespace
 
 MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Platens &platens,
@@ -153,20 +174,24 @@ MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Plate
   Mirrored own;
   Mirrored &m = mirrored ? *mirrored : own;
   m = mirror_in_platens(spheres, platens, tolerance);
-  const Boundary boundary = exterior_boundary(m.spheres, m.sealed, tolerance, cells);
-  if (boundary.facets.empty())
-    throw std::runtime_error("no surface: no facet of links between the platens separates the " +
-                             std::to_string(spheres.size()) +
-                             " spheres from the outside (are they a packing? tolerance " +
-                             std::to_string(tolerance) + ")");
-  MembraneTopology t;
-  for (const auto &f : boundary.facets) {
-    std::array<MembraneVertex, 3> facet;
-    for (int j = 0; j < 3; ++j) facet[j] = {m.original[f[j]], m.image[f[j]]};
-    t.facets.push_back(facet);
-  }
-  t.side.assign(boundary.side.begin(), boundary.side.begin() + spheres.size());
-  return t;
+  return topology_of(exterior_boundary(m.spheres, m.sealed, tolerance, cells), m, spheres.size(),
+                     tolerance);
+}
+
+MembraneTopology detect_membrane_near(const std::vector<Sphere> &spheres, const Platens &platens,
+                                      double tolerance, const std::vector<int> &seeds,
+                                      double thickness, bool *from_skin)
+{
+  check_platens(spheres, platens);
+  const Mirrored m = mirror_in_platens(spheres, platens, tolerance);
+  const std::vector<char> near = spheres_near(spheres, seeds, thickness);
+  std::vector<char> keep(m.spheres.size());
+  for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = near[m.original[i]];
+  Boundary boundary;
+  const bool skin = skin_boundary(m.spheres, m.sealed, tolerance, keep, boundary);
+  if (!skin) boundary = exterior_boundary(m.spheres, m.sealed, tolerance);
+  if (from_skin) *from_skin = skin;
+  return topology_of(boundary, m, spheres.size(), tolerance);
 }
 
 MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members)

@@ -79,6 +79,13 @@ MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Plate
                                  double tolerance, Mirrored *mirrored = nullptr,
                                  FloodCells *cells = nullptr);
 
+// detect_membrane(spheres, platens, tolerance), from the spheres with a gap of at most
+// `thickness` to a seed (e.g. the last detection's members) when they show the same
+// result (skin_flood.h), else from all; `from_skin` tells which.
+MembraneTopology detect_membrane_near(const std::vector<Sphere> &spheres, const Platens &platens,
+                                      double tolerance, const std::vector<int> &seeds,
+                                      double thickness, bool *from_skin = nullptr);
+
 // The topology over its members only: the spheres on a facet or outside, renumbered in
 // their order; `members` gets their indices in the detection's spheres.
 MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members);

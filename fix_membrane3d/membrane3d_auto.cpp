@@ -6,6 +6,8 @@
 
 #include "atom.h"
 
+#include "membrane3d_skin.h"
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -28,6 +30,7 @@ void group_signature(const GatheredSpheres &g, double out[3])
 } // namespace
 
 membrane3d::MembraneTopology Membrane3dAuto::detect(const GatheredSpheres &all,
+                                                    const std::vector<int> &member_tags,
                                                     const membrane3d::Platens &at, double tolerance,
                                                     long long step)
 {
@@ -35,7 +38,7 @@ membrane3d::MembraneTopology Membrane3dAuto::detect(const GatheredSpheres &all,
   if (dense.unwatched(step)) { // no watch, and none to build again after a restart
     built = false;
     sample = GatheredSpheres();
-    return membrane3d::detect_membrane(all.spheres, platens, tolerance);
+    return detect_near_members(all, member_tags, platens, tolerance);
   }
   sample = all;
   return build(tolerance);

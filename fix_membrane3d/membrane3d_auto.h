@@ -19,8 +19,10 @@
 
 class Membrane3dAuto {
  public:
-  // a detection on the group's spheres `all` (the whole topology, over all)
+  // a detection on the group's spheres `all` (the whole topology, over all), without a
+  // watch from the skin of the last members (membrane3d_skin.h)
   membrane3d::MembraneTopology detect(const GatheredSpheres &all,
+                                      const std::vector<int> &member_tags,
                                       const membrane3d::Platens &platens, double tolerance,
                                       long long step);
   // its members (indices into all, ascending: members_only)

@@ -68,6 +68,19 @@ inline std::vector<Sphere> sheared_sample() {
 }
 const Platens sheared_sample_platens{0.0, 0.019190253904679787};
 
+// Whether two detections found the same membrane: the same facets in the same order,
+// the same sides.
+inline bool same_topology(const membrane3d::MembraneTopology &a,
+                          const membrane3d::MembraneTopology &b) {
+  if (a.side != b.side || a.facets.size() != b.facets.size()) return false;
+  for (std::size_t f = 0; f < a.facets.size(); ++f)
+    for (int j = 0; j < 3; ++j)
+      if (a.facets[f][j].sphere != b.facets[f][j].sphere ||
+          a.facets[f][j].image != b.facets[f][j].image)
+        return false;
+  return true;
+}
+
 inline double mean_diameter(const std::vector<Sphere> &s) {
   double d = 0;
   for (const Sphere &x : s) d += 2 * x.r / s.size();

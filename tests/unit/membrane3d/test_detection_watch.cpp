@@ -18,6 +18,7 @@ using membrane3d::Sphere;
 
 using packings::mean_diameter;
 using packings::sheared_sample;
+const auto same = packings::same_topology;
 const Platens kSamplePlatensAt = packings::sheared_sample_platens;
 // platens far from the sample: no images (the images' mirror symmetry makes the
 // triangulation degenerate, decided by CGAL's symbolic perturbation: see
@@ -42,17 +43,6 @@ struct WatchedSample {
   {
   }
 };
-
-bool same(const MembraneTopology &a, const MembraneTopology &b)
-{
-  if (a.side != b.side || a.facets.size() != b.facets.size()) return false;
-  for (std::size_t f = 0; f < a.facets.size(); ++f)
-    for (int j = 0; j < 3; ++j)
-      if (a.facets[f][j].sphere != b.facets[f][j].sphere ||
-          a.facets[f][j].image != b.facets[f][j].image)
-        return false;
-  return true;
-}
 
 TEST(DetectionWatch, UnmovedSpheresKeepTheirMembrane)
 {

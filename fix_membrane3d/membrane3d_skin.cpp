@@ -1,0 +1,30 @@
+#include "membrane3d_skin.h"
+
+#include <algorithm>
+
+namespace {
+
+// The skin's thickness in mean diameters: on the triaxial sample of examples/triaxial
+// (7 699 spheres) the gap of one diameter around the members keeps about half of the
+// triangulation's points and shows the result (bench/membrane3d_cost.sh).
+const double SKIN_THICKNESS = 1.0;
+
+} // namespace
+
+membrane3d::MembraneTopology detect_near_members(const GatheredSpheres &all,
+                                                 const std::vector<int> &member_tags,
+                                                 const membrane3d::Platens &platens,
+                                                 double tolerance)
+{
+  std::vector<int> seeds;
+  for (int tag : member_tags) {
+    const auto at = std::lower_bound(all.tags.begin(), all.tags.end(), tag);
+    if (at != all.tags.end() && *at == tag)
+      seeds.push_back(static_cast<int>(at - all.tags.begin()));
+  }
+  double diameter = 0.0;
+  for (const auto &s : all.spheres) diameter += 2.0 * s.r;
+  if (!all.spheres.empty()) diameter /= static_cast<double>(all.spheres.size());
+  return membrane3d::detect_membrane_near(all.spheres, platens, tolerance, seeds,
+                                          SKIN_THICKNESS * diameter);
+}
