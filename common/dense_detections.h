@@ -9,11 +9,19 @@
 // building the watch adds a quarter to a detection); then the watch is tried again.
 // The membrane is the same either way (every auto = every 1); only the detection
 // count differs. No LIGGGHTS here.
+// fix membrane3d sets a shorter window and a longer unwatched run
+// (membrane3d_auto.cpp): there a detection found from the skin of the last membrane
+// costs half of one that builds the watch, so the watched windows of a sample whose
+// membrane changes at most steps would cost more than they save.
 constexpr long long DENSE_WINDOW = 100;
 constexpr long long DENSE_DETECTIONS = 70;
 constexpr long long UNWATCHED_STEPS = 500;
 
 struct DenseDetections {
+  // the schedule: a window of `window` watched steps with at least `dense` detections
+  // is followed by `unwatched_steps` without the watch (the constants above unless a
+  // style sets its own)
+  long long window = DENSE_WINDOW, dense = DENSE_DETECTIONS, unwatched_steps = UNWATCHED_STEPS;
   // the watched steps of the open window and how many of them detected, and the step
   // before which every step detects without a watch (-1: none)
   long long window_steps = 0, window_detections = 0;
@@ -28,11 +36,11 @@ struct DenseDetections {
   {
     window_steps++;
     if (detected) window_detections++;
-    if (window_steps < DENSE_WINDOW) return false;
-    const bool dense = window_detections >= DENSE_DETECTIONS;
+    if (window_steps < window) return false;
+    const bool closed_dense = window_detections >= dense;
     window_steps = window_detections = 0;
-    if (dense) unwatched_until = step + UNWATCHED_STEPS;
-    return dense;
+    if (closed_dense) unwatched_until = step + unwatched_steps;
+    return closed_dense;
   }
 };
 

@@ -19,6 +19,8 @@
 
 class Membrane3dAuto {
  public:
+  Membrane3dAuto(); // its dense schedule (membrane3d_auto.cpp)
+
   // a detection on the group's spheres `all` (the whole topology, over all), without a
   // watch from the skin of the last members (membrane3d_skin.h)
   membrane3d::MembraneTopology detect(const GatheredSpheres &all,

@@ -235,6 +235,22 @@ TEST(MembraneState, ADenseWindowSwitchesTheWatchOffForAWhile)
   EXPECT_FALSE(unwatched_step(run, last + UNWATCHED_STEPS)); // the watch is tried again
 }
 
+// A style's own schedule (fix membrane3d: 14 of 20, then 2 000 steps unwatched).
+TEST(MembraneState, ADenseScheduleOfItsOwn)
+{
+  DenseDetections dense;
+  dense.window = 20;
+  dense.dense = 14;
+  dense.unwatched_steps = 2000;
+  long long step = 10;
+  for (int k = 0; k < 20; k++) EXPECT_FALSE(dense.count_watched(step++, k < 13)); // 13 of 20
+  EXPECT_FALSE(dense.unwatched(step));
+  for (int k = 0; k < 19; k++) EXPECT_FALSE(dense.count_watched(step++, k < 13));
+  EXPECT_TRUE(dense.count_watched(step, true)); // the 14th of 20
+  EXPECT_TRUE(dense.unwatched(step + 1999));
+  EXPECT_FALSE(dense.unwatched(step + 2000));
+}
+
 TEST(MembraneState, ADroppedWatchMakesTheNextWatchedStepDetect)
 {
   SideChain chains[2];
