@@ -176,7 +176,16 @@ std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::ve
 {
   std::vector<char> near(spheres.size(), 0);
   double r_max = 0;
-  for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
+      throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
+                                  std::to_string(spheres[i].r) +
+                                  " or a centre that is not finite");
+    r_max = std::max(r_max, spheres[i].r);
+  }
+  if (!std::isfinite(thickness))
+    throw std::invalid_argument("skin thickness " + std::to_string(thickness) +
+                                ": must be finite");
   std::vector<int> all(spheres.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
   const SphereGrid grid(spheres, all, 2 * r_max + thickness);

@@ -28,7 +28,8 @@
 namespace membrane3d {
 
 // The spheres with a gap of at most `thickness` to one of the `seeds` (indices), the seeds
-// among them.
+// among them. Throws std::invalid_argument for a radius not positive, a centre or the
+// thickness not finite, std::out_of_range for a seed not a sphere's index.
 std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::vector<int> &seeds,
                                double thickness);
 

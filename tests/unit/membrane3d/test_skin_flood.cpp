@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -163,6 +164,21 @@ TEST(SkinFlood, MembraneNearItsMembersIsTheMembrane)
       membrane3d::detect_membrane_near(s, platens, kTolerance, {}, 1.0, &from_skin);
   EXPECT_FALSE(from_skin);
   EXPECT_TRUE(same_topology(none, all));
+}
+
+// What detect_membrane refuses, the skin refuses too, before it builds a grid on it.
+TEST(SkinFlood, ACentreNotFiniteIsAnError)
+{
+  auto s = jittered_block(4, 4, 6, 0.05, 1);
+  const Platens platens = packings::touching_platens(s);
+  s[5].x.x() = std::nan("");
+  EXPECT_THROW(membrane3d::detect_membrane(s, platens, kTolerance), std::invalid_argument);
+  EXPECT_THROW(membrane3d::detect_membrane_near(s, platens, kTolerance, {0, 1, 2}, 1.0),
+               std::invalid_argument);
+  EXPECT_THROW(membrane3d::spheres_near(s, {0}, 1.0), std::invalid_argument);
+  s[5].x.x() = 0.0;
+  EXPECT_THROW(membrane3d::spheres_near(s, {0}, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(membrane3d::spheres_near(s, {static_cast<int>(s.size())}, 1.0), std::out_of_range);
 }
 
 TEST(SkinFlood, FlagsNotOnePerSphereAreAnError)
