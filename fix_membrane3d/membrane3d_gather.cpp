@@ -34,8 +34,12 @@ void share(LAMMPS *lmp, const std::vector<double> &send, GatheredSpheres &out)
   const std::size_t n = all.size() / FIELDS;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&all](std::size_t a, std::size_t b) { return all[a * FIELDS] < all[b * FIELDS]; });
+  const auto by_tag = [&all](std::size_t a, std::size_t b) {
+    return all[a * FIELDS] < all[b * FIELDS];
+  };
+  // on one rank the members come in ascending IDs already
+  if (!std::is_sorted(order.begin(), order.end(), by_tag))
+    std::sort(order.begin(), order.end(), by_tag);
   out.tags.clear();
   out.spheres.clear();
   out.types.clear();

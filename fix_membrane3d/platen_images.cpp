@@ -5,13 +5,6 @@
 
 namespace membrane3d {
 
-Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p)
-{
-  Eigen::Vector3d y = x;
-  if (image != 0) y.z() = 2 * (image < 0 ? p.lo : p.hi) - x.z();
-  return y;
-}
-
 double height_grid(const Platens &p, double band)
 {
   // every height and image is below 4 (|lo| + |hi| + band) in size: 50 bits of it

@@ -17,8 +17,14 @@ struct Platens {
   double lo, hi; // z of the lower and upper platen
 };
 
-// x, or its mirror image in the lower (image -1) or upper (+1) platen.
-Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p);
+// x, or its mirror image in the lower (image -1) or upper (+1) platen (inline: at
+// every facet's corners every step).
+inline Eigen::Vector3d image_position(const Eigen::Vector3d &x, int image, const Platens &p)
+{
+  Eigen::Vector3d y = x;
+  if (image != 0) y.z() = 2 * (image < 0 ? p.lo : p.hi) - x.z();
+  return y;
+}
 
 // The triangulation's heights lie on a grid of this spacing (a power of two, some
 // 1e-15 of the heights): on it a mirror image 2 z_platen - z is exact, so that the

@@ -6,11 +6,6 @@
 
 namespace membrane3d {
 
-Eigen::Vector3d facet_vector_area(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                  const Eigen::Vector3d &c) {
-  return 0.5 * (b - a).cross(c - a);
-}
-
 void check_facets(const Surface &surface) {
   const long n = static_cast<long>(surface.points.size());
   for (std::size_t f = 0; f < surface.facets.size(); ++f)
