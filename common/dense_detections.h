@@ -5,8 +5,8 @@
 // watched steps detected, the next UNWATCHED_STEPS steps detect every step without
 // building the watch, which then costs more than it saves (a long chain or a large
 // surface has some relation flipping at most steps; in 2D at 134 k disks a watched
-// step cost about 1 + 4.7 r ms at a detection rate r, an unwatched one 3.6 ms; in 3D
-// building the watch adds a quarter to a detection); then the watch is tried again.
+// step cost about 1 + 4.7 r ms at a detection rate r, an unwatched one 3.6 ms); then
+// the watch is tried again.
 // The membrane is the same either way (every auto = every 1); only the detection
 // count differs. No LIGGGHTS here.
 // fix membrane3d sets a shorter window and a longer unwatched run
