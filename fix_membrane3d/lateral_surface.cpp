@@ -2,7 +2,6 @@
 
 #include "skin_flood.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
