@@ -61,9 +61,7 @@ membrane3d::MembraneTopology Membrane3dAuto::detect(const GatheredSpheres &all,
 // same on every rank, and after a restart.
 membrane3d::MembraneTopology Membrane3dAuto::build(double tolerance)
 {
-  double diameter = 0.0;
-  for (const auto &s : sample.spheres) diameter += 2.0 * s.r;
-  const double budget = WATCH_BUDGET * diameter / static_cast<double>(sample.spheres.size());
+  const double budget = WATCH_BUDGET * mean_diameter(sample);
   group_signature(sample, signature);
   built = true;
   return membrane3d::detect_watched_membrane(sample.spheres, platens, tolerance, budget, watch);

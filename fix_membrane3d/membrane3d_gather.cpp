@@ -53,6 +53,13 @@ void share(LAMMPS *lmp, const std::vector<double> &send, GatheredSpheres &out)
 
 } // namespace
 
+double mean_diameter(const GatheredSpheres &g)
+{
+  double diameter = 0.0;
+  for (const auto &s : g.spheres) diameter += 2.0 * s.r;
+  return g.spheres.empty() ? 0.0 : diameter / static_cast<double>(g.spheres.size());
+}
+
 void gather_group(LAMMPS *lmp, int groupbit, GatheredSpheres &out)
 {
   Atom *atom = lmp->atom;

@@ -16,6 +16,9 @@ struct GatheredSpheres {
   std::vector<int> types;                  // their atom types now
 };
 
+// The spheres' mean diameter (0 for none).
+double mean_diameter(const GatheredSpheres &g);
+
 // Every atom of the group.
 void gather_group(LAMMPS_NS::LAMMPS *lmp, int groupbit, GatheredSpheres &out);
 

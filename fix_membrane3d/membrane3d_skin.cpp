@@ -22,9 +22,6 @@ membrane3d::MembraneTopology detect_near_members(const GatheredSpheres &all,
     if (at != all.tags.end() && *at == tag)
       seeds.push_back(static_cast<int>(at - all.tags.begin()));
   }
-  double diameter = 0.0;
-  for (const auto &s : all.spheres) diameter += 2.0 * s.r;
-  if (!all.spheres.empty()) diameter /= static_cast<double>(all.spheres.size());
   return membrane3d::detect_membrane_near(all.spheres, platens, tolerance, seeds,
-                                          SKIN_THICKNESS * diameter);
+                                          SKIN_THICKNESS * mean_diameter(all));
 }
