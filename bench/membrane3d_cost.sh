@@ -5,7 +5,9 @@
 # ranks. Prints the times and the ratios to the cylinder, measured in one run, the
 # cost of one detection (from every 1 and every 200) and the share of the steps
 # every auto detects on.
-# Also the pair forces' share of the step (the sample's own cost under each boundary).
+# Also the sample's own cost under each boundary (the pair forces and neighbour lists,
+# and its contacts per sphere), and the boundary's own: the rest of the step against
+# the rest of the cylinder's step.
 #   bench/membrane3d_cost.sh [RESTART] [NSTEPS] [VSHEAR]
 # VSHEAR: the upper platen's speed down in the timed steps [m/s] (default 0: still).
 # RESTART: the compressed sample of examples/triaxial/in.triaxial
@@ -22,18 +24,20 @@ platen=${restart%.restart}.platen
 csv=membrane3d_cost.csv
 never=100000000
 meshdir=../examples/triaxial/meshes
-. ./step_time.sh
-# NP LATERAL EVERY NSTEPS: "ms_per_step,pair_ms_per_step,detections" (in the timed steps)
+# NP LATERAL EVERY NSTEPS: "ms_per_step,pair_ms_per_step,neigh_ms_per_step,contacts,detections"
+# (in the timed steps)
 ms_cost() {
   local log
   log=$(mpirun --allow-run-as-root --oversubscribe -np "$1" "$exe" -in in.membrane3d_cost -log none \
     -var restart "$restart" -var platen "$platen" -var lateral "$2" -var every "$3" -var nsteps "$4" \
     -var vshear "$vshear" -var meshdir "$(readlink -f "$meshdir")")
-  printf "%s,%s,%s" "$(grep "^Loop time" <<<"$log" | tail -1 | awk '{printf "%.4f", 1000 * $4 / $9}')" \
+  printf "%s,%s,%s,%s,%s" "$(grep "^Loop time" <<<"$log" | tail -1 | awk '{printf "%.4f", 1000 * $4 / $9}')" \
     "$(grep "^Pair  time" <<<"$log" | tail -1 | awk -v n="$4" '{printf "%.4f", 1000 * $5 / n}')" \
+    "$(grep "^Neigh time" <<<"$log" | tail -1 | awk -v n="$4" '{printf "%.4f", 1000 * $5 / n}')" \
+    "$(grep "^BENCH contacts" <<<"$log" | awk '{printf "%.3f", $5}')" \
     "$(grep "^BENCH detections" <<<"$log" | awk '{print $3}')"
 }
-echo "ranks,lateral,every,ms_per_step,pair_ms_per_step,detections,steps" > $csv
+echo "ranks,lateral,every,ms_per_step,pair_ms_per_step,neigh_ms_per_step,contacts_per_sphere,detections,steps" > $csv
 for np in 1 2; do
   echo "$np,cylinder,0,$(ms_cost $np 0 1 "$nsteps"),$nsteps" >> $csv
   # every $never: the placement alone (the one detection at the run's start is not timed)
@@ -43,24 +47,35 @@ done
 /usr/bin/python3 - "$csv" "$never" <<'PY'
 import collections, csv, sys
 NEVER = sys.argv[2]
-rows, pairs = collections.defaultdict(dict), collections.defaultdict(dict)
+rows = collections.defaultdict(dict)
 for r in csv.DictReader(open(sys.argv[1])):
-    rows[r["ranks"]][(r["lateral"], r["every"])] = (float(r["ms_per_step"]),
-                                                   float(r["detections"] or 0) / float(r["steps"]))
-    pairs[r["ranks"]][(r["lateral"], r["every"])] = float(r["pair_ms_per_step"])
+    rows[r["ranks"]][(r["lateral"], r["every"])] = r
 for np_, t in sorted(rows.items()):
-    base, base_pair = t[("cylinder", "0")][0], pairs[np_][("cylinder", "0")]
+    def ms(key, column="ms_per_step"):
+        return float(t[key][column])
+    cylinder, placed = ("cylinder", "0"), ("membrane", NEVER)
+    base = ms(cylinder)
+    def sample(key):  # the sample's own cost: its pair forces and neighbour lists
+        return ms(key, "pair_ms_per_step") + ms(key, "neigh_ms_per_step")
+    # the membrane's denser sample (more contacts) seen with a membrane placed only:
+    # without it, what each membrane costs itself (its detections slow the pair forces
+    # that follow them too: they are its cost)
+    denser = sample(placed) - sample(cylinder)
     print("ranks %s:" % np_)
     print("  %-22s %8.3f ms/step" % ("rigid cylinder", base))
     for every in (NEVER, "200", "50", "10", "auto", "1"):
-        ms, share = t[("membrane", every)]
+        key = ("membrane", every)
+        share = float(t[key]["detections"] or 0) / float(t[key]["steps"])
         name = "membrane, placed only" if every == NEVER else "membrane every " + every
-        print("  %-22s %8.3f ms/step  %+7.1f %% vs cylinder  detections on %5.1f %% of the steps"
-              % (name, ms, 100 * (ms / base - 1), 100 * share))
+        print("  %-22s %8.3f ms/step  %+7.1f %% vs cylinder (its own %+7.1f %%)  "
+              "detections on %5.1f %% of the steps"
+              % (name, ms(key), 100 * (ms(key) / base - 1), 100 * (ms(key) - base - denser) / base,
+                 100 * share))
     # every 1 detects each step, every 200 almost never: the difference is a detection
-    print("  one detection          %8.1f ms" % (t[("membrane", "1")][0] - t[("membrane", "200")][0]))
-    # the sample's own cost: the pair forces under the cylinder and under a membrane placed only
-    placed_pair = pairs[np_][("membrane", NEVER)]
-    print("  pair forces            %8.3f ms/step in the cylinder, %.3f under the membrane (%+.1f %%)"
-          % (base_pair, placed_pair, 100 * (placed_pair / base_pair - 1)))
+    print("  one detection          %8.1f ms" % (ms(("membrane", "1")) - ms(("membrane", "200"))))
+    print("  pair forces            %8.3f ms/step in the cylinder, %.3f under the membrane (%+.1f %%); "
+          "contacts per sphere %.2f and %.2f"
+          % (ms(cylinder, "pair_ms_per_step"), ms(placed, "pair_ms_per_step"),
+             100 * (ms(placed, "pair_ms_per_step") / ms(cylinder, "pair_ms_per_step") - 1),
+             float(t[cylinder]["contacts_per_sphere"]), float(t[placed]["contacts_per_sphere"])))
 PY
