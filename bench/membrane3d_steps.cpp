@@ -1,0 +1,136 @@
+// How much of fix membrane3d's surface changes from one step to the next on a real
+// run: what a kinetic repair of the triangulation (flips where it changed) would have
+// to redo each step, against the detection from scratch that every auto does now.
+// For consecutive snapshots of a dump "id radius x y z" (sorted by id, the same atoms
+// in each), the membrane of each (all spheres, detect_membrane) against the first
+// snapshot's and the one before it: facets and membrane spheres gained or lost, and
+// the cells of the triangulation the flood reads (flooded cells and the dry cells next
+// to them) that are new.
+//   membrane3d_steps DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS
+#include "lateral_surface.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using Vertex = std::pair<int, int>; // (sphere, image)
+using FacetKey = std::array<Vertex, 3>;
+using CellKey = std::array<Vertex, 4>;
+
+struct Snapshot {
+  long step = 0;
+  std::vector<membrane3d::Sphere> spheres;
+};
+
+bool read_snapshot(std::ifstream &in, Snapshot &s)
+{
+  std::string line;
+  if (!std::getline(in, line)) return false; // ITEM: TIMESTEP
+  in >> s.step;
+  std::getline(in, line);
+  std::getline(in, line); // ITEM: NUMBER OF ATOMS
+  std::size_t n = 0;
+  in >> n;
+  std::getline(in, line);
+  for (int k = 0; k < 5; ++k) std::getline(in, line); // box bounds, ITEM: ATOMS
+  s.spheres.clear();
+  double id, r, x, y, z;
+  for (std::size_t k = 0; k < n && in >> id >> r >> x >> y >> z; ++k)
+    s.spheres.push_back({Eigen::Vector3d(x, y, z), r});
+  std::getline(in, line);
+  return s.spheres.size() == n && n > 0;
+}
+
+struct Found {
+  std::set<FacetKey> facets;
+  std::set<int> members;
+  std::set<CellKey> read_cells; // flooded, and dry next to the flood
+  double ms = 0;
+};
+
+Found detect(const Snapshot &s, const membrane3d::Platens &platens, double tolerance)
+{
+  Found out;
+  membrane3d::Mirrored mirrored;
+  membrane3d::FloodCells cells;
+  const auto start = std::chrono::steady_clock::now();
+  const membrane3d::MembraneTopology t =
+      membrane3d::detect_membrane(s.spheres, platens, tolerance, &mirrored, &cells);
+  out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  for (const auto &f : t.facets) {
+    FacetKey key;
+    for (int j = 0; j < 3; ++j) key[j] = {f[j].sphere, f[j].image};
+    std::sort(key.begin(), key.end());
+    out.facets.insert(key);
+  }
+  for (std::size_t k = 0; k < t.side.size(); ++k)
+    if (t.side[k] == membrane3d::Side::surface) out.members.insert(static_cast<int>(k));
+  const auto vertex = [&](int v) -> Vertex {
+    return v < 0 ? Vertex{-1, 0} : Vertex{mirrored.original[v], mirrored.image[v]};
+  };
+  for (std::size_t c = 0; c < cells.vertex.size(); ++c) {
+    bool read = cells.flooded[c] != 0;
+    for (int j = 0; j < 4 && !read; ++j) {
+      const int n = cells.neighbour[c][j];
+      read = n >= 0 && cells.flooded[n] != 0;
+    }
+    if (!read) continue;
+    CellKey key;
+    for (int j = 0; j < 4; ++j) key[j] = vertex(cells.vertex[c][j]);
+    std::sort(key.begin(), key.end());
+    out.read_cells.insert(key);
+  }
+  return out;
+}
+
+template <class T> std::size_t missing(const std::set<T> &from, const std::set<T> &in)
+{
+  std::size_t n = 0;
+  for (const T &x : from) n += in.count(x) == 0;
+  return n;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  if (argc != 5) {
+    std::cerr << "usage: membrane3d_steps DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS\n";
+    return 2;
+  }
+  std::ifstream in(argv[1]);
+  const membrane3d::Platens platens{std::atof(argv[2]), std::atof(argv[3])};
+  std::vector<Snapshot> snapshots;
+  for (Snapshot s; read_snapshot(in, s);) snapshots.push_back(s);
+  if (snapshots.size() < 2) {
+    std::cerr << "fewer than two snapshots in " << argv[1] << "\n";
+    return 1;
+  }
+  double diameters = 0;
+  for (const auto &s : snapshots[0].spheres) diameters += 2 * s.r;
+  const double tolerance = std::atof(argv[4]) * diameters / snapshots[0].spheres.size();
+  std::printf("%zu snapshots of %zu spheres, tolerance %.4g m\n", snapshots.size(),
+              snapshots[0].spheres.size(), tolerance);
+  std::printf("step,facets,facets_new_since_last,facets_new_since_first,members,"
+              "members_new_since_last,read_cells,read_cells_new_since_last,detection_ms\n");
+  Found first, last;
+  for (std::size_t k = 0; k < snapshots.size(); ++k) {
+    const Found now = detect(snapshots[k], platens, tolerance);
+    if (k == 0) first = now;
+    std::printf("%ld,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%.1f\n", snapshots[k].step, now.facets.size(),
+                k ? missing(now.facets, last.facets) : 0, missing(now.facets, first.facets),
+                now.members.size(), k ? missing(now.members, last.members) : 0,
+                now.read_cells.size(), k ? missing(now.read_cells, last.read_cells) : 0, now.ms);
+    last = now;
+  }
+  return 0;
+}
