@@ -11,6 +11,8 @@
 #include "error.h"
 #include "lammps.h"
 
+#include "number_text.h"
+
 // The keyword/value arguments of a style, walked in order, with one form for
 // every message of our four styles (doc/messages.md):
 //
@@ -21,15 +23,6 @@
 //
 // `prefix` is "Fix membrane2d: ", "Compute fabric: ", ...; `usage` says what
 // the value is ("band W: a length in distance units, default 4 x D50").
-
-// %g of a number, for messages
-inline std::string number_text(double v)
-{
-  if (std::isnan(v)) return "nan"; // not "-nan", whatever its sign bit
-  char buf[64];
-  snprintf(buf, sizeof(buf), "%g", v);
-  return buf;
-}
 
 inline std::string keyword_message(const std::string &prefix, const std::string &key,
                                    const std::string &value, const std::string &problem)

@@ -1,4 +1,5 @@
 #include "exterior_flood.h"
+#include "number_text.h"
 
 #include "power_flood.h"
 
@@ -16,18 +17,18 @@ void check_input(const std::vector<Sphere> &spheres, const std::vector<bool> &se
                  double tolerance)
 {
   if (spheres.size() < 4)
-    throw std::invalid_argument(std::to_string(spheres.size()) +
-                                " spheres: a surface needs at least four");
+    throw std::invalid_argument(count_text(spheres.size(), "sphere", "spheres") +
+                                ": a surface needs at least four");
   if (sealed.size() != spheres.size())
     throw std::invalid_argument("sealed flags for " + std::to_string(sealed.size()) + " of " +
                                 std::to_string(spheres.size()) + " spheres");
   if (!std::isfinite(tolerance) || tolerance < 0)
-    throw std::invalid_argument("tolerance " + std::to_string(tolerance) +
+    throw std::invalid_argument("tolerance " + number_text(tolerance) +
                                 ": must be a finite length >= 0");
   for (std::size_t i = 0; i < spheres.size(); ++i)
     if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
       throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
-                                  std::to_string(spheres[i].r) + " or a centre that is not finite");
+                                  number_text(spheres[i].r) + " or a centre that is not finite");
 }
 
 } // namespace

@@ -94,6 +94,8 @@ class FixMembrane3d : public Fix {
   membrane3d::MembraneTopology topology;
   std::vector<int> member_tags;
   bigint last_detection = -1;
+  bigint decided_step = -1; // the last step pre_force decided on
+  std::vector<membrane3d::Sphere> detected_at; // the members then (after a restart: at its start)
   double detections = 0.0;
 
   // this step
@@ -102,6 +104,7 @@ class FixMembrane3d : public Fix {
   membrane3d::Platens platens{0.0, 0.0};
   bool warned_rim = false;
   bool warned_spread = false; // an input differing between the ranks, once per fix
+  bool warned_moved = false;  // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];
   bool centres_placed = false; // output[VOLUME] is this step's
 

@@ -1,4 +1,5 @@
 #include "lateral_surface.h"
+#include "number_text.h"
 
 #include "skin_flood.h"
 
@@ -134,15 +135,15 @@ class PlatenClip {
 void check_platens(const std::vector<Sphere> &spheres, const Platens &p)
 {
   if (spheres.size() < 4)
-    throw std::invalid_argument(std::to_string(spheres.size()) +
-                                " spheres: a surface needs at least four");
+    throw std::invalid_argument(count_text(spheres.size(), "sphere", "spheres") +
+                                ": a surface needs at least four");
   if (!(std::isfinite(p.lo) && std::isfinite(p.hi) && p.lo < p.hi))
-    throw std::invalid_argument("platens at z = " + std::to_string(p.lo) + " and " +
-                                std::to_string(p.hi) + ": the lower must be below the upper");
+    throw std::invalid_argument("platens at z = " + number_text(p.lo) + " and " +
+                                number_text(p.hi) + ": the lower must be below the upper");
   for (std::size_t i = 0; i < spheres.size(); ++i)
     if (!(spheres[i].x.z() > p.lo && spheres[i].x.z() < p.hi))
       throw std::invalid_argument("sphere " + std::to_string(i) + " at z = " +
-                                  std::to_string(spheres[i].x.z()) + " is not between the platens");
+                                  number_text(spheres[i].x.z()) + " is not between the platens");
 }
 
 // The topology of the boundary of the spheres' flood with their images `m`.
@@ -151,9 +152,9 @@ MembraneTopology topology_of(const Boundary &boundary, const Mirrored &m, std::s
 {
   if (boundary.facets.empty())
     throw std::runtime_error("no surface: no facet of links between the platens separates the " +
-                             std::to_string(n_spheres) +
-                             " spheres from the outside (are they a packing? tolerance " +
-                             std::to_string(tolerance) + ")");
+                             count_text(n_spheres, "sphere", "spheres") +
+                             " from the outside (are they a packing? tolerance " +
+                             number_text(tolerance) + ")");
   MembraneTopology t;
   for (const auto &f : boundary.facets) {
     std::array<MembraneVertex, 3> facet;

@@ -105,7 +105,7 @@ bool Membrane3dAuto::can_have_changed(LAMMPS *lmp, int groupbit, const membrane3
   MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, lmp->world);
   if (sums[0] != signature[0] || sums[1] != signature[1] || largest != signature[2]) return true;
 
-  gather_tags(lmp, watched_tags, watched);
+  gather_tags(lmp, groupbit, watched_tags, watched);
   const bool changed = watched.tags.size() != watched_tags.size() ||
                        membrane3d::membrane_can_have_changed(watch, watched.spheres, now);
   dense.count_watched(step, changed);

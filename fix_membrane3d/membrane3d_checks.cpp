@@ -17,6 +17,12 @@
 
 using namespace LAMMPS_NS;
 
+namespace {
+// The lateral net load of a closed membrane, relative to the sum of the loads' sizes:
+// zero but for the round-off of summing them.
+const double CLOSURE_ROUND_OFF = 1e-9;
+} // namespace
+
 // Two membranes on one sphere would press it twice; two on one file would overwrite
 // each other's frames.
 void check_other_membranes(LAMMPS *lmp, const char *prefix, Fix *self)
@@ -101,4 +107,81 @@ void check_between_platens(LAMMPS *lmp, const char *prefix, const GatheredSphere
                             "; the platens must enclose every sphere centre of the group")
                                .c_str());
   }
+}
+
+void check_platens_in_order(LAMMPS *lmp, const char *prefix, const ScalarInput &lo,
+                            const ScalarInput &hi, const membrane3d::Platens &platens)
+{
+  if (platens.lo < platens.hi) return;
+  lmp->error->all(FLERR, (std::string(prefix) + "keywords 'zlo' = " + lo.text() + " and 'zhi' = " +
+                          hi.text() + ": zlo is " + number_text(platens.lo) +
+                          ", not below zhi = " + number_text(platens.hi) + " at step " +
+                          std::to_string(lmp->update->ntimestep) +
+                          "; zlo is the lower platen surface, zhi the upper one")
+                             .c_str());
+}
+
+void check_tolerance(LAMMPS *lmp, const char *prefix, const std::string &text, double tolerance,
+                     double d, double most, double usual)
+{
+  if (!(tolerance > most * d)) return;
+  lmp->error->all(FLERR, keyword_message(prefix, "tolerance", text,
+                                         "is " + number_text(tolerance / d) +
+                                             " x the group's mean diameter d = " + number_text(d) +
+                                             "; the largest gap at which two spheres are linked "
+                                             "is a length of at most " + number_text(most) +
+                                             " x d (wider ones bridge the hollows of the "
+                                             "sample's surface), usually " + number_text(usual) +
+                                             " x d = " + number_text(usual * d) + " (the default)")
+                             .c_str());
+}
+
+Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<Eigen::Vector3d> &load)
+{
+  Eigen::Vector3d net = Eigen::Vector3d::Zero();
+  double magnitude = 0.0;
+  for (const Eigen::Vector3d &f : load) {
+    net += f;
+    magnitude += f.norm();
+  }
+  if (net.head<2>().norm() > CLOSURE_ROUND_OFF * magnitude)
+    lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads have a lateral net force of " +
+                            number_text(net.head<2>().norm()) + " N (of " + number_text(magnitude) +
+                            " N in all) at step " + std::to_string(lmp->update->ntimestep) +
+                            ": the membrane is not closed; this is a fault of fix membrane3d; "
+                            "please report it with the input script")
+                               .c_str());
+  return net;
+}
+
+void warn_if_moved(LAMMPS *lmp, const char *prefix, const GatheredSpheres &now,
+                   std::vector<membrane3d::Sphere> &at, double tolerance, long long since,
+                   bool &warned)
+{
+  if (warned) return;
+  if (at.size() != now.spheres.size()) {
+    at = now.spheres;
+    return;
+  }
+  std::size_t farthest = 0;
+  double most = 0.0;
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    const double moved = (now.spheres[k].x - at[k].x).norm();
+    if (moved > most) {
+      most = moved;
+      farthest = k;
+    }
+  }
+  if (!(most > tolerance)) return;
+  warned = true;
+  if (lmp->comm->me == 0)
+    lmp->error->warning(FLERR, (std::string(prefix) + "membrane sphere " +
+                                std::to_string(now.tags[farthest]) + " has moved " +
+                                number_text(most) + " since the membrane was found at step " +
+                                std::to_string(since) + ", more than the tolerance " +
+                                number_text(tolerance) + " (at step " +
+                                std::to_string(lmp->update->ntimestep) +
+                                "): that membrane can be out of date; find it more often "
+                                "(a smaller every, or every auto)")
+                                   .c_str());
 }

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <string>
 #include <vector>
 
 #include "lammps.h"
@@ -21,6 +22,30 @@ class Fix;
 // Every sphere centre of `g` strictly between the platens (else names the atom).
 void check_between_platens(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const GatheredSpheres &g,
                            const membrane3d::Platens &platens);
+
+// The platens in order: zlo below zhi at this step (naming both inputs: either may
+// be the variable that moved).
+void check_platens_in_order(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const ScalarInput &lo,
+                            const ScalarInput &hi, const membrane3d::Platens &platens);
+
+// The tolerance T (as given, `text`) at most `most` mean diameters `d` of the group:
+// a wider T bridges the hollows of the sample's surface, and far wider ones (1e11 d)
+// leave the regular triangulation's weights to round-off.
+void check_tolerance(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const std::string &text,
+                     double tolerance, double d, double most, double usual);
+
+// The loads' net force, after checking that it has no lateral part beyond round-off:
+// a closed membrane with its rims in the platen planes has none, and a run must not go
+// on with loads that have one.
+Eigen::Vector3d check_closed(LAMMPS_NS::LAMMPS *lmp, const char *prefix,
+                             const std::vector<Eigen::Vector3d> &load);
+
+// Warns once (`warned`) when a member of `now` is more than the tolerance from where it
+// was when the membrane was found at step `since` (`at`, in the same order; empty after
+// a restart: then from now on): that membrane can be out of date.
+void warn_if_moved(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const GatheredSpheres &now,
+                   std::vector<membrane3d::Sphere> &at, double tolerance, long long since,
+                   bool &warned);
 
 // No other membrane3d shares a sphere or the vtk file with `self`.
 void check_other_membranes(LAMMPS_NS::LAMMPS *lmp, const char *prefix, LAMMPS_NS::Fix *self);

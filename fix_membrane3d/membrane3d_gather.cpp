@@ -69,14 +69,15 @@ void gather_group(LAMMPS *lmp, int groupbit, GatheredSpheres &out)
   share(lmp, send, out);
 }
 
-void gather_tags(LAMMPS *lmp, const std::vector<int> &tags, GatheredSpheres &out)
+void gather_tags(LAMMPS *lmp, int groupbit, const std::vector<int> &tags, GatheredSpheres &out)
 {
   Atom *atom = lmp->atom;
   std::vector<double> send;
   for (int tag : tags) {
     const int i = tag <= atom->map_tag_max ? atom->map(tag) : -1;
     // owned here, and the map not stale (the slot holds that atom)
-    if (i >= 0 && i < atom->nlocal && atom->tag[i] == tag) pack(atom, i, send);
+    if (i >= 0 && i < atom->nlocal && atom->tag[i] == tag && (atom->mask[i] & groupbit))
+      pack(atom, i, send);
   }
   share(lmp, send, out);
 }

@@ -22,7 +22,9 @@ double mean_diameter(const GatheredSpheres &g);
 // Every atom of the group.
 void gather_group(LAMMPS_NS::LAMMPS *lmp, int groupbit, GatheredSpheres &out);
 
-// The atoms of these IDs (ascending) that still exist: the caller compares the count.
-void gather_tags(LAMMPS_NS::LAMMPS *lmp, const std::vector<int> &tags, GatheredSpheres &out);
+// The atoms of the group with these IDs (ascending): the caller compares the count
+// (an atom lost, or no longer in the group).
+void gather_tags(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<int> &tags,
+                 GatheredSpheres &out);
 
 #endif

@@ -6,7 +6,7 @@ namespace membrane3d {
 
 namespace {
 const double MAGIC = 3.0e7 + 3;  // fix membrane3d's records, not membrane2d's
-const int VERSION = 2; // 2: the detection's spheres
+const int VERSION = 3; // 2: the detection's spheres; 3: the decided step
 } // namespace
 
 std::vector<double> write_record(const Membrane3dState &s) {
@@ -37,6 +37,7 @@ std::vector<double> write_record(const Membrane3dState &s) {
     for (int d = 0; d < 3; ++d) w.put(s.sample.at(k).x[d]);
     w.put(s.sample[k].r);
   }
+  w.put(s.decided_step);
   return w.finish();
 }
 
@@ -80,6 +81,7 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
       in.sample.push_back(sphere);
     }
   }
+  if (r.version() >= 3) in.decided_step = r.get();
   if (!r.finished()) return r.error();
   s = in;
   return "";

@@ -1,7 +1,8 @@
 // The restart record of fix membrane3d (no LIGGGHTS: unit-tested in
 // tests/unit/membrane3d): its definition, the last detection (the topology over the
 // member atoms' IDs and its step; with every auto, the spheres it was made on) and
-// the detection counter. Records of version 1 (without the spheres) are read.
+// the detection counter. Records of versions 1 (without the spheres) and 2 (without the
+// decided step) are read.
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 
@@ -17,6 +18,7 @@ struct Membrane3dState {
   double tolerance_given = -1;  // as given, -1 for the default
   int every = 1;
   double last_detection = -1;   // step
+  double decided_step = -1;     // the last step whose detection was decided (version 3)
   double detections = 0;
   std::vector<int> member_tags;
   MembraneTopology topology;    // over the members

@@ -1,4 +1,5 @@
 #include "skin_flood.h"
+#include "number_text.h"
 
 #include "power_flood.h"
 
@@ -179,12 +180,12 @@ std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::ve
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
       throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
-                                  std::to_string(spheres[i].r) +
+                                  number_text(spheres[i].r) +
                                   " or a centre that is not finite");
     r_max = std::max(r_max, spheres[i].r);
   }
   if (!std::isfinite(thickness))
-    throw std::invalid_argument("skin thickness " + std::to_string(thickness) +
+    throw std::invalid_argument("skin thickness " + number_text(thickness) +
                                 ": must be finite");
   std::vector<int> all(spheres.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);

@@ -14,6 +14,7 @@ Membrane3dState sample_state() {
   s.tolerance_given = 2.5e-4;
   s.every = 7;
   s.last_detection = 28;
+  s.decided_step = 30;
   s.detections = 5;
   s.member_tags = {3, 9, 12, 40};
   s.topology.side = {Side::surface, Side::surface, Side::outside, Side::surface};
@@ -36,6 +37,7 @@ TEST(Membrane3dRecord, RoundTrip) {
   EXPECT_EQ(back.tolerance_given, 2.5e-4);
   EXPECT_EQ(back.every, 7);
   EXPECT_EQ(back.last_detection, 28);
+  EXPECT_EQ(back.decided_step, 30);
   EXPECT_EQ(back.detections, 5);
   EXPECT_EQ(back.member_tags, (std::vector<int>{3, 9, 12, 40}));
   EXPECT_EQ(back.topology.side, sample_state().topology.side);
@@ -57,7 +59,7 @@ TEST(Membrane3dRecord, RoundTrip) {
 // A record of version 1 (before every auto: no schedule, no spheres) is read.
 TEST(Membrane3dRecord, VersionOneIsRead) {
   auto rec = membrane3d::write_record(sample_state());
-  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5)); // the version-2 tail
+  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5 + 1)); // the version-2 and -3 tails
   rec[1] = 1;
   rec[2] = static_cast<double>(rec.size());
   Membrane3dState back;
@@ -65,6 +67,19 @@ TEST(Membrane3dRecord, VersionOneIsRead) {
   EXPECT_EQ(back.member_tags, (std::vector<int>{3, 9, 12, 40}));
   EXPECT_TRUE(back.sample.empty());
   EXPECT_EQ(back.unwatched_until, -1);
+  EXPECT_EQ(back.decided_step, -1);
+}
+
+// A record of version 2 (before the decided step) is read: no step decided yet.
+TEST(Membrane3dRecord, VersionTwoIsRead) {
+  auto rec = membrane3d::write_record(sample_state());
+  rec.resize(rec.size() - 1); // the version-3 tail
+  rec[1] = 2;
+  rec[2] = static_cast<double>(rec.size());
+  Membrane3dState back;
+  ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
+  EXPECT_EQ(back.sample_tags, (std::vector<int>{3, 9}));
+  EXPECT_EQ(back.decided_step, -1);
 }
 
 TEST(Membrane3dRecord, CutOrCorruptIsRefused) {
