@@ -5,7 +5,10 @@
 // in each), the membrane of each (all spheres, detect_membrane) against the first
 // snapshot's and the one before it: facets and membrane spheres gained or lost, and
 // the cells of the triangulation the flood reads (flooded cells and the dry cells next
-// to them) that are new.
+// to them) that are new. Then the detection from the skin (detect_membrane_near, as
+// fix membrane3d does it) of each snapshot around the members of the one 1 or 10 steps
+// before, for skins of 0.5, 0.75 and 1 mean diameter: how often the skin holds (else
+// all spheres are triangulated) and its time.
 //   membrane3d_steps DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS
 #include "lateral_surface.h"
 
@@ -53,6 +56,7 @@ bool read_snapshot(std::ifstream &in, Snapshot &s)
 struct Found {
   std::set<FacetKey> facets;
   std::set<int> members;
+  std::vector<int> seeds; // on the membrane or escaped: fix membrane3d's members
   std::set<CellKey> read_cells; // flooded, and dry next to the flood
   double ms = 0;
 };
@@ -72,8 +76,10 @@ Found detect(const Snapshot &s, const membrane3d::Platens &platens, double toler
     std::sort(key.begin(), key.end());
     out.facets.insert(key);
   }
-  for (std::size_t k = 0; k < t.side.size(); ++k)
+  for (std::size_t k = 0; k < t.side.size(); ++k) {
     if (t.side[k] == membrane3d::Side::surface) out.members.insert(static_cast<int>(k));
+    if (t.side[k] != membrane3d::Side::inside) out.seeds.push_back(static_cast<int>(k));
+  }
   const auto vertex = [&](int v) -> Vertex {
     return v < 0 ? Vertex{-1, 0} : Vertex{mirrored.original[v], mirrored.image[v]};
   };
@@ -123,8 +129,10 @@ int main(int argc, char **argv)
   std::printf("step,facets,facets_new_since_last,facets_new_since_first,members,"
               "members_new_since_last,read_cells,read_cells_new_since_last,detection_ms\n");
   Found first, last;
+  std::vector<Found> found;
   for (std::size_t k = 0; k < snapshots.size(); ++k) {
     const Found now = detect(snapshots[k], platens, tolerance);
+    found.push_back(now);
     if (k == 0) first = now;
     std::printf("%ld,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%.1f\n", snapshots[k].step, now.facets.size(),
                 k ? missing(now.facets, last.facets) : 0, missing(now.facets, first.facets),
@@ -132,5 +140,22 @@ int main(int argc, char **argv)
                 now.read_cells.size(), k ? missing(now.read_cells, last.read_cells) : 0, now.ms);
     last = now;
   }
+  const double d = diameters / snapshots[0].spheres.size();
+  std::printf("skin_diameters,steps_old,detections,held,mean_ms\n");
+  for (double skin : {0.5, 0.75, 1.0})
+    for (std::size_t old : {1, 10}) {
+      int held = 0, n = 0;
+      double ms = 0;
+      for (std::size_t k = old; k < snapshots.size(); ++k, ++n) {
+        bool from_skin = false;
+        const auto start = std::chrono::steady_clock::now();
+        membrane3d::detect_membrane_near(snapshots[k].spheres, platens, tolerance,
+                                         found[k - old].seeds, skin * d, &from_skin);
+        ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count();
+        held += from_skin;
+      }
+      std::printf("%.2f,%zu,%d,%d,%.1f\n", skin, old, n, held, ms / n);
+    }
   return 0;
 }

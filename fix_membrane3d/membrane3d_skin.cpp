@@ -6,7 +6,10 @@ namespace {
 
 // The skin's thickness in mean diameters: on the triaxial sample of examples/triaxial
 // (7 699 spheres) the gap of one diameter around the members keeps about half of the
-// triangulation's points and shows the result (bench/membrane3d_cost.sh).
+// triangulation's points and shows the result (bench/membrane3d_cost.sh). Around
+// members 1 or 10 steps old, 0.5 d never showed it (all spheres were triangulated),
+// 0.75 d always did, 10 % faster than 1 d (bench/membrane3d_steps.sh): 1 d keeps a
+// margin for a sheared, bulging membrane.
 const double SKIN_THICKNESS = 1.0;
 
 } // namespace
