@@ -5,6 +5,7 @@
 // cores: %g (a tolerance of 1e-12 is not "0.000000"), "1 sphere" and "3 spheres".
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 

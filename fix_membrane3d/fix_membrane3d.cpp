@@ -385,6 +385,7 @@ double FixMembrane3d::memory_usage()
 {
   return static_cast<double>(member_tags.capacity() * sizeof(int) +
                              topology.facets.capacity() * sizeof(topology.facets[0]) +
-                             members.spheres.capacity() * sizeof(membrane3d::Sphere)) +
+                             (members.spheres.capacity() + detected_at.capacity()) *
+                                 sizeof(membrane3d::Sphere)) +
          automatic.memory_usage();
 }
