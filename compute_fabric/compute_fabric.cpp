@@ -56,12 +56,8 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
                           .c_str());
 
   // the base class leaves its output pointers uninitialised
-  vector = nullptr;
-  array = nullptr;
-  vector_atom = nullptr;
-  array_atom = nullptr;
-  vector_local = nullptr;
-  array_local = nullptr;
+  vector = vector_atom = vector_local = nullptr;
+  array = array_atom = array_local = nullptr;
 
   parse_args(iarg, narg, arg);
 
@@ -148,7 +144,8 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
       args.bad("must come first, right after fabric (LIGGGHTS reads it there for every compute)",
                usage);
     } else {
-      args.unknown("bins, estimator, stability, rattlers, histogram, stress, region, walls");
+      args.unknown(three_d ? "stress, region, walls" // the others are 2D only
+                           : "bins, estimator, stability, rattlers, histogram, stress, region, walls");
     }
   }
   if (rattlers_flag && !stability_flag && comm->me == 0)
@@ -277,14 +274,23 @@ void ComputeFabric::warn_no_normal(long count)
 // virial for compute stress/atom at its next step.
 double ComputeFabric::sample_area()
 {
+  if (evaluating_area) // the variable invokes this compute: it would recurse until it crashed
+    error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
+                                      "reads compute " + std::string(id) + " itself; give the "
+                                      "sample's size from other quantities")
+                          .c_str());
+  evaluating_area = true;
   const double area =
       area_in.is_variable() ? input->variable->compute_equal(area_ivar) : area_in.evaluate(lmp);
-  if (!(std::isfinite(area) && area > 0.0))
+  evaluating_area = false;
+  if (!(std::isnormal(area) && area > 0.0))
     error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
                                       "is " + number_text(area) + " at step " +
                                           std::to_string(update->ntimestep) +
                                           "; it must be a positive number (the sample " +
-                                          (three_d ? "volume)" : "area)"))
+                                          (three_d ? "volume)" : "area)") +
+                                          // 1e-320 would make every stress infinite
+                                          (area > 0.0 ? ", not a subnormal one" : ""))
                           .c_str());
   return area;
 }
@@ -374,18 +380,6 @@ void ComputeFabric::compute_peratom()
     array_atom[i][0] = count;
     array_atom[i][1] = selected ? current.lambda[i] : 0.0;
   }
-}
-
-/* ---------------------------------------------------------------------- */
-
-int ComputeFabric::pack_reverse_comm(int n, int first, double *buf)
-{
-  return contact_source.pack_ends(n, first, buf);
-}
-
-void ComputeFabric::unpack_reverse_comm(int n, int *list, double *buf)
-{
-  contact_source.unpack_ends(n, list, buf);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -41,8 +41,12 @@ class ComputeFabric : public Compute {
   void compute_array();
   void compute_peratom();
   double memory_usage();
-  int pack_reverse_comm(int, int, double *);
-  void unpack_reverse_comm(int, int *, double *);
+  // the contact angles seen at ghosts go to their owners (FabricLocal)
+  int pack_reverse_comm(int n, int first, double *buf)
+  {
+    return contact_source.pack_ends(n, first, buf);
+  }
+  void unpack_reverse_comm(int n, int *list, double *buf) { contact_source.unpack_ends(n, list, buf); }
 
   // global vector layout in 2D (1-based in input scripts: c_ID[k]; 3D: fabric3d)
   enum VectorIndex {
@@ -94,6 +98,7 @@ class ComputeFabric : public Compute {
     bool with_angles = false; // contact angles per particle collected
   } current;
   bool warned_no_normal;
+  bool evaluating_area = false; // sample_area is running (a variable reading this compute)
 
   int nmax_atom;
 

@@ -10,6 +10,7 @@
 #include "compute.h"
 #include "compute_pair_gran_local.h"
 #include "error.h"
+#include "force.h"
 #include "group.h"
 #include "modify.h"
 #include "update.h"
@@ -61,6 +62,13 @@ GranLocalSources::~GranLocalSources()
 
 void GranLocalSources::init(bool with_walls)
 {
+  // before the pair/gran/local it creates says so without naming compute fabric
+  if (!force->pair)
+    error->all(FLERR, msg("compute " + std::string(owner->id) +
+                          " reads the contacts of the pair style, and there is none; define a "
+                          "granular pair style (e.g. pair_style gran model hertz tangential "
+                          "history) before the run")
+                          .c_str());
   init_source(pairs_, "_contacts");
   if (!with_walls) return;
   // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
@@ -121,6 +129,12 @@ void GranLocalSources::create_source(ContactSource &src, const char *suffix)
 {
   delete[] src.id;
   src.id = copy_of(std::string(owner->id) + suffix);
+  const int taken = modify->find_compute(src.id);
+  if (taken >= 0)
+    error->all(FLERR, msg("compute " + std::string(owner->id) + " (fabric) creates its compute " +
+                          src.style + " as '" + src.id + "', and compute " + src.id + " (" +
+                          modify->compute[taken]->style + ") exists; rename one of them")
+                          .c_str());
 
   char *args[6] = {src.id,        (char *)"all", const_cast<char *>(src.style),
                    (char *)"pos", (char *)"id",  (char *)"force"};
