@@ -36,6 +36,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
+. tools/run_options.sh
 
 scale=1; strain=0.10; rate=0.0025; np=$(nproc); seed=12345; samples=1; paper=0; restart_every=50000; vtk=0.005
 while [ $# -gt 0 ]; do
@@ -45,7 +46,7 @@ while [ $# -gt 0 ]; do
     --scale) scale=$2; shift ;;
     --paper) paper=1 ;;
     --restart-every) restart_every=$2; shift ;;
-    --np) np=$2; shift ;;
+    --np) np=${2-}; ranks_or_exit "$np"; shift ;;
     --rate) rate=$2; shift ;;
     --strain) strain=$2; shift ;;
     --seed) seed=$2; shift ;;

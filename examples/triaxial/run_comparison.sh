@@ -14,6 +14,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
+. "$root/tools/run_options.sh"
 np=2
 seeds="86028121 104395301 122949823"
 W=0.036
@@ -25,7 +26,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --quick) W=0.016; size=(-var hfill 0.06 -var nsettle 8000 -var ncompress 12000)
              seeds="86028121 104395301"; vtkevery=1000 ;;
-    --np) np=$2; shift ;;
+    --np) np=${2-}; ranks_or_exit "$np"; shift ;;
     --seeds) seeds=$2; shift ;;
     --frictionless) frictionless=$2; shift ;;
     --width) W=$2; suffix=_$2; shift

@@ -7,13 +7,16 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
+. "$root/tools/run_options.sh"
 np=2
 vars=()
+usage="usage: $0 [--quick] [--np N]   (N: MPI ranks, an integer >= 1, default 2)"
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) vars+=(-var R 0.01 -var hfill 0.06 -var nsettle 8000 -var ncompress 10000 -var nhold 4000) ;;
-    --np) np=$2; shift ;;
-    *) echo "usage: $0 [--quick] [--np N]"; exit 2 ;;
+    --np) np=${2-}; ranks_or_exit "$np"; shift ;;
+    -h|--help) echo "$usage"; exit 0 ;;
+    *) echo "$0: unknown option '$1'" >&2; echo "$usage" >&2; exit 2 ;;
   esac
   shift
 done
