@@ -12,11 +12,27 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
 namespace vtk_series {
+
+// Whether two frame files given by name are one file ("a.pvd", "./a.pvd", its absolute
+// path, a path through a link): two fixes writing it would interleave or overwrite
+// each other's frames. Neither need exist yet.
+inline bool same_file(const std::string &a, const std::string &b)
+{
+  if (a.empty() || b.empty()) return false;
+  namespace fs = std::filesystem;
+  std::error_code ea, eb;
+  // absolute first: of a relative name that does not exist it keeps the name as it is
+  const fs::path pa = fs::weakly_canonical(fs::absolute(a, ea), ea);
+  const fs::path pb = fs::weakly_canonical(fs::absolute(b, eb), eb);
+  return ea || eb ? a == b : pa == pb;
+}
 
 // The start of a one-piece PolyData file, up to its PointData.
 inline std::string polydata_start(std::size_t points, std::size_t verts, std::size_t lines,

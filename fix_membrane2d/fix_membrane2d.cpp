@@ -17,6 +17,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "group.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -143,7 +144,10 @@ void FixMembrane2d::init()
 
   // D50 sets the default band width and gap tolerance; with the density, the inertial number
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
-  if (grains.empty) error->all(FLERR, (std::string(PREFIX) + "the fix group has no atoms").c_str());
+  if (grains.empty)
+    error->all(FLERR, (std::string(PREFIX) + "the fix group '" + group->names[igroup] +
+                       "' has no atoms; give it the sample's disks")
+                          .c_str());
   d50 = grains.d50;
   density = grains.density;
   set_lengths(definition, d50, run);

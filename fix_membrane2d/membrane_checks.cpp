@@ -14,6 +14,7 @@
 #include "fix_membrane2d.h"
 #include "membrane_output.h"
 #include "style_args.h"
+#include "vtk_series.h"
 
 using namespace LAMMPS_NS;
 
@@ -62,7 +63,8 @@ void check_other_membranes(LAMMPS *lmp, const char *prefix, Fix *self, MembraneG
     // each would overwrite the other's frames (and the .pvd would list only one)
     for (const char *key : {"polyline", "vtk"}) {
       const std::string mine = static_cast<FixMembrane2d *>(self)->frame_files().file(key);
-      if (!mine.empty() && mine == static_cast<FixMembrane2d *>(other)->frame_files().file(key))
+      if (vtk_series::same_file(mine,
+                                static_cast<FixMembrane2d *>(other)->frame_files().file(key)))
         lmp->error->all(FLERR, (pair + "both write " + key + " frames to '" + mine +
                                 "': give each fix its own file")
                                    .c_str());

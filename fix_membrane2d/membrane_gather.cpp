@@ -261,7 +261,8 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
   const std::string step = std::to_string(update->ntimestep);
   if (recv_.size() != WATCH_FIELDS * (list.size() + comm->nprocs))
     error->all(FLERR, (prefix_ + "a chain, escaped or band disk was lost at step " + step +
-                       " (it left the box; 'thermo_modify lost ignore' hides this): the membrane "
+                       " (it left the box, or its position became infinite or NaN under an infinite "
+                       "force; 'thermo_modify lost ignore' hides this): the membrane "
                        "cannot hold a sample whose outer disks fly off; check the time step, the "
                        "pressure and the platens")
                           .c_str());

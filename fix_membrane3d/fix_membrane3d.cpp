@@ -20,6 +20,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "group.h"
 #include "modify.h"
 #include "update.h"
 
@@ -139,7 +140,9 @@ void FixMembrane3d::init()
       sums[1] += 1.0;
     }
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
-  if (sums[1] == 0.0) fail("the fix group has no atoms", "give it the sample's spheres");
+  if (sums[1] == 0.0)
+    fail(("the fix group '" + std::string(group->names[igroup]) + "' has no atoms").c_str(),
+         "give it the sample's spheres");
   check_other_membranes(lmp, PREFIX, this);
   check_frictionless_type(lmp, PREFIX, types.type(), style, "membrane spheres");
   const double d = sums[0] / sums[1];

@@ -14,6 +14,7 @@
 
 #include "fix_membrane3d.h"
 #include "style_args.h"
+#include "vtk_series.h"
 
 using namespace LAMMPS_NS;
 
@@ -40,7 +41,7 @@ void check_other_membranes(LAMMPS *lmp, const char *prefix, Fix *self)
     const std::string pair = std::string(prefix) + "fixes '" + (first ? other->id : self->id) +
                              "' and '" + (first ? self->id : other->id) + "' ";
     const std::string mine = static_cast<FixMembrane3d *>(self)->vtk_file();
-    if (!mine.empty() && mine == static_cast<FixMembrane3d *>(other)->vtk_file())
+    if (vtk_series::same_file(mine, static_cast<FixMembrane3d *>(other)->vtk_file()))
       lmp->error->all(FLERR, (pair + "both write vtk frames to '" + mine +
                               "': give each fix its own file")
                                  .c_str());

@@ -2,6 +2,8 @@
 // the limits of its lengths and the wording of its warnings.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cmath>
 
 #include "membrane_output.h"
@@ -136,4 +138,15 @@ TEST(MembraneVtk, TheCollectionListsTheFramesInOrder)
   EXPECT_EQ(vtk_series::pvd_frames(vtk_series::pvd_collection(frames)), frames);
   EXPECT_TRUE(vtk_series::pvd_frames("").empty());
   EXPECT_TRUE(vtk_series::pvd_frames("<DataSet timestep=\"3\" file=\"cut").empty());
+}
+
+// Two fixes must not write one file however its name is spelled.
+TEST(MembraneVtk, OneFileHoweverItIsNamed)
+{
+  const std::string here = std::filesystem::current_path().string();
+  EXPECT_TRUE(vtk_series::same_file("a.pvd", "./a.pvd"));
+  EXPECT_TRUE(vtk_series::same_file("a.pvd", here + "/a.pvd"));
+  EXPECT_TRUE(vtk_series::same_file("nosuchdir/../a.pvd", "a.pvd")); // neither need exist
+  EXPECT_FALSE(vtk_series::same_file("a.pvd", "b.pvd"));
+  EXPECT_FALSE(vtk_series::same_file("", ""));  // no file: no clash
 }
