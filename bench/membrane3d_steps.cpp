@@ -8,9 +8,11 @@
 // to them) that are new. Then the detection from the skin (detect_membrane_near, as
 // fix membrane3d does it) of each snapshot around the members of the one 1 or 10 steps
 // before, for skins of 0.5, 0.75 and 1 mean diameter: how often the skin holds (else
-// all spheres are triangulated) and its time.
+// all spheres are triangulated) and its time; and a run's first detection, from the
+// skin of the outermost spheres.
 //   membrane3d_steps DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS
 #include "lateral_surface.h"
+#include "skin_flood.h"
 
 #include <algorithm>
 #include <chrono>
@@ -157,5 +159,14 @@ int main(int argc, char **argv)
       }
       std::printf("%.2f,%zu,%d,%d,%.1f\n", skin, old, n, held, ms / n);
     }
+  // a run's first detection: no members yet, the skin of the outermost spheres
+  const std::vector<int> seeds = membrane3d::outermost_spheres(snapshots[0].spheres, d, 0.5 * d);
+  bool from_skin = false;
+  const auto start = std::chrono::steady_clock::now();
+  membrane3d::detect_membrane_near(snapshots[0].spheres, platens, tolerance, seeds, d, &from_skin);
+  std::printf("first detection from the %zu outermost spheres: %s, %.1f ms\n", seeds.size(),
+              from_skin ? "held" : "all spheres triangulated",
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count());
   return 0;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "skin_flood.h"
+
 namespace {
 
 // The skin's thickness in mean diameters: on the triaxial sample of examples/triaxial
@@ -11,6 +13,11 @@ namespace {
 // 0.75 d always did, 10 % faster than 1 d (bench/membrane3d_steps.sh): 1 d keeps a
 // margin for a sheared, bulging membrane.
 const double SKIN_THICKNESS = 1.0;
+// The depth of the outermost spheres that seed a run's first detection, in mean
+// diameters (skin_flood.h): the outer layer. One diameter takes the second layer of a
+// block too, and the links among them close its core off as a dry group of its own: the
+// skin is refused (tests/unit/membrane3d/test_skin_flood.cpp).
+const double OUTERMOST_DEPTH = 0.5;
 
 } // namespace
 
@@ -25,6 +32,10 @@ membrane3d::MembraneTopology detect_near_members(const GatheredSpheres &all,
     if (at != all.tags.end() && *at == tag)
       seeds.push_back(static_cast<int>(at - all.tags.begin()));
   }
+  const double d = mean_diameter(all);
+  // a run's first detection: no members yet, the skin of the outermost spheres (a skin
+  // from all spheres on every rank would hold about 1.4 kB per sphere on each)
+  if (seeds.empty()) seeds = membrane3d::outermost_spheres(all.spheres, d, OUTERMOST_DEPTH * d);
   return membrane3d::detect_membrane_near(all.spheres, platens, tolerance, seeds,
-                                          SKIN_THICKNESS * mean_diameter(all));
+                                          SKIN_THICKNESS * d);
 }

@@ -1,6 +1,6 @@
 #include "skin_flood.h"
-#include "number_text.h"
 
+#include "number_text.h"
 #include "power_flood.h"
 
 #include <Eigen/Geometry>
@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace membrane3d {
 
@@ -279,6 +280,38 @@ bool skin_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &
   out.side.assign(spheres.size(), Side::inside);
   for (std::size_t k = 0; k < skin.size(); ++k) out.side[skin_index[k]] = b.side[k];
   return true;
+}
+
+std::vector<int> outermost_spheres(const std::vector<Sphere> &spheres, double diameter,
+                                   double depth)
+{
+  if (spheres.empty() || !(diameter > 0) || !std::isfinite(diameter)) return {};
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero();
+  double z_lo = spheres[0].x.z(), outer = 0;
+  for (const Sphere &s : spheres) {
+    axis += s.x.head<2>() / static_cast<double>(spheres.size());
+    z_lo = std::min(z_lo, s.x.z());
+  }
+  std::vector<double> reach(spheres.size()); // of each outer face from the axis
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    reach[i] = (spheres[i].x.head<2>() - axis).norm() + spheres[i].r;
+    outer = std::max(outer, reach[i]);
+  }
+  const long sectors = std::clamp(static_cast<long>(2 * M_PI * outer / diameter), 8L, 1L << 16);
+  std::vector<long> bin(spheres.size());
+  std::unordered_map<long, double> farthest;
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const Eigen::Vector2d r = spheres[i].x.head<2>() - axis;
+    const double turn = (std::atan2(r.y(), r.x()) + M_PI) / (2 * M_PI); // 0 .. 1
+    const long sector = std::min(static_cast<long>(turn * sectors), sectors - 1);
+    bin[i] = static_cast<long>((spheres[i].x.z() - z_lo) / diameter) * sectors + sector;
+    double &most = farthest.emplace(bin[i], reach[i]).first->second;
+    most = std::max(most, reach[i]);
+  }
+  std::vector<int> seeds;
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    if (reach[i] >= farthest[bin[i]] - depth) seeds.push_back(static_cast<int>(i));
+  return seeds;
 }
 
 } // namespace membrane3d

@@ -33,6 +33,15 @@ namespace membrane3d {
 std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::vector<int> &seeds,
                                double thickness);
 
+// Seeds for a detection with no last membrane to start from (a run's first): the
+// outermost spheres around the sample's axis (through the centroid of the centres, along
+// z). Around the axis the sample is cut into sectors about `diameter` wide at its
+// outer radius and slabs `diameter` high; in each, the spheres whose outer face is
+// within `depth` of the outermost's. Any seeds are safe (skin_boundary shows the result
+// or all spheres are triangulated); these find a sample that is not hollow.
+std::vector<int> outermost_spheres(const std::vector<Sphere> &spheres, double diameter,
+                                   double depth);
+
 // exterior_boundary(spheres, sealed, tolerance) from the spheres with `keep` set, into
 // `out`, when that is shown to be the same (above); false, with `out` untouched, when
 // not. Throws what exterior_boundary throws, and std::invalid_argument for `keep` not

@@ -166,6 +166,43 @@ TEST(SkinFlood, MembraneNearItsMembersIsTheMembrane)
   EXPECT_TRUE(same_topology(none, all));
 }
 
+// A run's first detection starts from the outermost spheres (half a diameter deep): on a
+// block they show the membrane of all spheres, from a skin that leaves its core out;
+// one diameter deep they take the second layer too, whose links close the core off
+// as a dry group of its own, and the skin is refused (all are triangulated: the same
+// membrane). On the small sheared sample (198 spheres, most near its surface) the skin
+// is refused either way, with the same membrane.
+TEST(SkinFlood, OutermostSpheresSeedTheFirstDetection)
+{
+  const auto block = jittered_block(8, 8, 10, 0.05, 5);
+  const Platens platens = packings::touching_platens(block);
+  const MembraneTopology all = membrane3d::detect_membrane(block, platens, kTolerance);
+  for (double depth : {0.5, 1.0}) {
+    const std::vector<int> seeds = membrane3d::outermost_spheres(block, 1.0, depth);
+    bool from_skin = false;
+    const MembraneTopology near =
+        membrane3d::detect_membrane_near(block, platens, kTolerance, seeds, 1.0, &from_skin);
+    EXPECT_EQ(from_skin, depth < 1.0) << "depth " << depth;
+    EXPECT_TRUE(same_topology(near, all)) << "depth " << depth;
+    for (int k : not_inside(all.side)) // every member is a seed
+      EXPECT_EQ(std::count(seeds.begin(), seeds.end(), k), 1) << "sphere " << k;
+    EXPECT_EQ(seeds.size(), depth < 1.0 ? 333u : 422u); // of 640: the outer layer, then two
+  }
+  const auto sheared = packings::sheared_sample();
+  const double d = packings::mean_diameter(sheared);
+  bool from_skin = true;
+  const MembraneTopology near = membrane3d::detect_membrane_near(
+      sheared, packings::sheared_sample_platens, kTolerance * d,
+      membrane3d::outermost_spheres(sheared, d, 0.5 * d), d, &from_skin);
+  EXPECT_FALSE(from_skin);
+  EXPECT_TRUE(same_topology(
+      near, membrane3d::detect_membrane(sheared, packings::sheared_sample_platens, kTolerance * d)));
+  // a 5 x 5 x 5 lattice: its core sphere (2, 2, 2) is no seed; no spheres, no seeds
+  const std::vector<int> lattice = membrane3d::outermost_spheres(packings::simple_cubic(5, 5, 5), 1.0, 0.5);
+  EXPECT_EQ(std::count(lattice.begin(), lattice.end(), 2 * 25 + 2 * 5 + 2), 0);
+  EXPECT_TRUE(membrane3d::outermost_spheres({}, 1.0, 1.0).empty());
+}
+
 // What detect_membrane refuses, the skin refuses too, before it builds a grid on it.
 TEST(SkinFlood, ACentreNotFiniteIsAnError)
 {
