@@ -1,6 +1,6 @@
 #include "exterior_flood.h"
-#include "number_text.h"
 
+#include "number_text.h"
 #include "power_flood.h"
 
 #include <algorithm>
@@ -11,10 +11,19 @@
 
 namespace membrane3d {
 
-namespace {
+using power::Cell;
+using power::Vertex;
 
-void check_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                 double tolerance)
+void check_spheres(const std::vector<Sphere> &spheres)
+{
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
+      throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
+                                  number_text(spheres[i].r) + " or a centre that is not finite");
+}
+
+void check_flood_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
+                       double tolerance)
 {
   if (spheres.size() < 4)
     throw std::invalid_argument(count_text(spheres.size(), "sphere", "spheres") +
@@ -25,21 +34,7 @@ void check_input(const std::vector<Sphere> &spheres, const std::vector<bool> &se
   if (!std::isfinite(tolerance) || tolerance < 0)
     throw std::invalid_argument("tolerance " + number_text(tolerance) +
                                 ": must be a finite length >= 0");
-  for (std::size_t i = 0; i < spheres.size(); ++i)
-    if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
-      throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
-                                  number_text(spheres[i].r) + " or a centre that is not finite");
-}
-
-} // namespace
-
-using power::Cell;
-using power::Vertex;
-
-void check_flood_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                       double tolerance)
-{
-  check_input(spheres, sealed, tolerance);
+  check_spheres(spheres);
 }
 
 PowerFlood::PowerFlood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
@@ -229,7 +224,7 @@ std::vector<Side> PowerFlood::sides(FloodCells *cells) const
 Boundary exterior_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                            double tolerance, FloodCells *cells)
 {
-  check_input(spheres, sealed, tolerance);
+  check_flood_input(spheres, sealed, tolerance);
   if (cells) *cells = FloodCells();
   return PowerFlood(spheres, sealed, tolerance).boundary(cells);
 }

@@ -38,6 +38,10 @@ inline K::Weighted_point_3 weighted_point(const Sphere &s)
 
 } // namespace power
 
+// Each sphere's radius positive and centre finite, else std::invalid_argument naming
+// the sphere (the flood's and the skin's check).
+void check_spheres(const std::vector<Sphere> &spheres);
+
 // exterior_boundary's checks of its arguments (std::invalid_argument).
 void check_flood_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                        double tolerance);

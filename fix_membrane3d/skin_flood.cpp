@@ -177,14 +177,9 @@ std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::ve
                                double thickness)
 {
   std::vector<char> near(spheres.size(), 0);
+  check_spheres(spheres);
   double r_max = 0;
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    if (!(spheres[i].r > 0) || !spheres[i].x.allFinite())
-      throw std::invalid_argument("sphere " + std::to_string(i) + " has radius " +
-                                  number_text(spheres[i].r) +
-                                  " or a centre that is not finite");
-    r_max = std::max(r_max, spheres[i].r);
-  }
+  for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
   if (!std::isfinite(thickness))
     throw std::invalid_argument("skin thickness " + number_text(thickness) +
                                 ": must be finite");
