@@ -6,8 +6,8 @@
 # cost of one detection (from every 1 and every 200) and the share of the steps
 # every auto detects on.
 # Also the sample's own cost under each boundary (the pair forces and neighbour lists,
-# and its contacts per sphere), and the boundary's own: the rest of the step against
-# the rest of the cylinder's step.
+# and its contacts per sphere), and each membrane's own cost: its step beyond the
+# cylinder's, less what the sample costs more under a membrane placed only.
 #   bench/membrane3d_cost.sh [RESTART] [NSTEPS] [VSHEAR]
 # VSHEAR: the upper platen's speed down in the timed steps [m/s] (default 0: still).
 # RESTART: the compressed sample of examples/triaxial/in.triaxial
