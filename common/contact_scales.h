@@ -9,6 +9,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_property_global.h"
 #include "lammps.h"
@@ -50,8 +51,9 @@ inline double min_group_mass(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm worl
   return mmin < 1e300 ? mmin : 0.0;
 }
 
-// Grain scales of a group over all ranks: D50 by area (= by mass for one
-// density) and the mean density (group mass / disk area, per unit thickness).
+// Grain scales of a group over all ranks: D50 by mass (for one density) and the
+// mean density: group mass / disk area (per unit thickness) in 2D, / sphere
+// volume in 3D.
 struct GrainScales {
   double d50 = 0.0;
   double density = 0.0;
@@ -63,18 +65,21 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
   LAMMPS_NS::Atom *atom = lmp->atom;
   std::vector<double> diameters, all;
   std::vector<int> counts, displs;
-  double sums[2] = {0.0, 0.0}; // mass, area
+  const int dimension = lmp->domain->dimension;
+  double sums[2] = {0.0, 0.0}; // mass, area (2D) or volume (3D)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    diameters.push_back(2.0 * atom->radius[i]);
+    const double r = atom->radius[i];
+    diameters.push_back(2.0 * r);
     if (atom->rmass_flag) sums[0] += atom->rmass[i];
-    sums[1] += LAMMPS_NS::MathConst::MY_PI * atom->radius[i] * atom->radius[i];
+    sums[1] += dimension == 3 ? 4.0 / 3.0 * LAMMPS_NS::MathConst::MY_PI * r * r * r
+                              : LAMMPS_NS::MathConst::MY_PI * r * r;
   }
   allgather_doubles(world, diameters, all, counts, displs);
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   GrainScales g;
   g.empty = all.empty();
-  g.d50 = stability::d50_by_area(all);
+  g.d50 = stability::d50_by_mass(all, dimension);
   g.density = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
   return g;
 }

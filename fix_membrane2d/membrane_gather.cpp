@@ -249,7 +249,7 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
         x[i][0],
         x[i][1],
         atom->radius[i],
-        stability::step_fraction(v[0], v[1], update->dt, atom->radius[i]),
+        stability::step_fraction(v[0], v[1], v[2], update->dt, atom->radius[i]),
         static_cast<double>(atom->type[i])};
     send_.insert(send_.end(), rec, rec + WATCH_FIELDS);
   }

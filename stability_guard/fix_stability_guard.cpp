@@ -55,7 +55,7 @@ constexpr double DEFAULT_MOVE = stability::STEP_FRACTION_BLOWN_UP;
 constexpr double DEFAULT_OVERLAP = 0.1;
 constexpr double DEFAULT_TIME_STEP = stability::TIME_STEP_POORLY_RESOLVED;
 constexpr double DEFAULT_ILIMIT = stability::INERTIAL_QUASI_STATIC;
-// The largest limits that keep each check meaningful (doc, Syntax): a disk
+// The largest limits that keep each check meaningful (doc, Syntax): a particle
 // that moves or overlaps by its radius is far beyond what the checks are for;
 // above dt = 2 sqrt(m/k) velocity Verlet is unstable even for one contact; I > 1
 // is a collisional flow.
@@ -81,10 +81,10 @@ std::string limit_usage(const std::string &what, double max, double fallback,
 const std::string EVERY_USAGE =
     "every N, check every N steps (default " + std::to_string(DEFAULT_EVERY) + ")";
 const std::string MOVE_USAGE =
-    limit_usage("move F, stop the run when a disk moves more than F x its radius in one step",
+    limit_usage("move F, stop the run when a particle moves more than F x its radius in one step",
                 MAX_MOVE, DEFAULT_MOVE);
 const std::string OVERLAP_USAGE =
-    limit_usage("overlap F, warn when two disks overlap by more than F x the smaller radius",
+    limit_usage("overlap F, warn when two particles overlap by more than F x the smaller radius",
                 MAX_OVERLAP, DEFAULT_OVERLAP);
 const std::string TIMESTEP_USAGE = limit_usage(
     "timestep F, warn when dt > F x sqrt(m_min/k_n)", MAX_TIME_STEP, DEFAULT_TIME_STEP,
@@ -117,9 +117,6 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
     time_step_limit(DEFAULT_TIME_STEP), inertial_limit(DEFAULT_ILIMIT), check_inertial(false),
     d50(0.0), density(0.0), natoms0(0), warned_overlap(false), warned_inertial(false), warnings(0)
 {
-  if (domain->dimension != 2)
-    fail(msg("requires dimension 2 (this run has dimension " + std::to_string(domain->dimension) +
-             "); use dimension 2"));
   if (!atom->radius_flag)
     fail(msg(std::string("requires atom style sphere or granular (per-atom radius), not ") +
              atom->atom_style + "; use atom_style granular"));
@@ -188,7 +185,7 @@ void FixStabilityGuard::init()
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
   if (grains.empty)
     fail(msg(std::string("the fix group '") + group->names[igroup] +
-             "' has no atoms; use a group with the disks to watch"));
+             "' has no atoms; use a group with the particles to watch"));
   d50 = grains.d50;
   density = grains.density;
   values[TIME_STEP_RATIO] =
@@ -262,7 +259,7 @@ void FixStabilityGuard::restart(char *raw)
 }
 
 /* ----------------------------------------------------------------------
-   non-finite values and disks that move a large fraction of their radius
+   non-finite values and particles that move a large fraction of their radius
    per step: the signature of an explicit integration that has blown up
    (the kinetic energy grows without bound); stop before it writes garbage.
    Returns the largest |v| dt / r.
@@ -305,7 +302,7 @@ bigint FixStabilityGuard::count_group_atoms()
 
 /* ----------------------------------------------------------------------
    with 'thermo_modify lost ignore' LIGGGHTS drops atoms that leave a
-   fixed boundary silently; a biaxial sample must keep every disk
+   fixed boundary silently; a biaxial or triaxial sample must keep every particle
 ------------------------------------------------------------------------- */
 
 bigint FixStabilityGuard::check_lost_atoms()
@@ -316,7 +313,7 @@ bigint FixStabilityGuard::check_lost_atoms()
 }
 
 /* ----------------------------------------------------------------------
-   disk-disk overlaps over the pair style's neighbour list (current: it is
+   particle-particle overlaps over the pair style's neighbour list (current: it is
    rebuilt on reneighbouring and ghosts are updated every step); wall
    contacts are not in it. Returns the largest overlap / smaller radius.
 ------------------------------------------------------------------------- */
@@ -363,7 +360,7 @@ double FixStabilityGuard::check_inertial_number()
   if (stability::warn_once_now(inertial.value, inertial_limit, warned_inertial)) {
     warned_inertial = true;
     warn(stability::inertial_warning(inertial.value, inertial_limit, update->ntimestep, rate, d50,
-                                     density, pressure, INERTIAL + 1));
+                                     density, domain->dimension, pressure, INERTIAL + 1));
   }
   return inertial.value;
 }

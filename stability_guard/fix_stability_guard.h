@@ -16,9 +16,9 @@ FixStyle(stability/guard,FixStabilityGuard)
 
 namespace LAMMPS_NS {
 
-// fix stability/guard: watches a 2D granular run every N steps and stops it
+// fix stability/guard: watches a granular run (2D or 3D) every N steps and stops it
 // with an error that says what to change once it has gone unstable (non-finite
-// values, a disk moving a large fraction of its radius per step, lost atoms);
+// values, a particle moving a large fraction of its radius per step, lost atoms);
 // warns once each when the time step, the overlaps or the inertial number
 // leave their safe range. See doc/fix_stability_guard.md. The measures and
 // decisions are in stability_checks.h, the wording in stability_messages.h (no
@@ -47,7 +47,7 @@ class FixStabilityGuard : public Fix {
   };
 
  private:
-  double move_limit;      // error: a disk moves more than this x its radius in one step
+  double move_limit;      // error: a particle moves more than this x its radius in one step
   double overlap_limit;   // warning: overlap / smaller radius
   double time_step_limit; // warning: dt / sqrt(m_min / k_n)
   double inertial_limit;  // warning: inertial number

@@ -29,15 +29,15 @@ double inertial_number(double strain_rate, double diameter, double density, doub
   return std::fabs(strain_rate) * diameter * std::sqrt(density / pressure);
 }
 
-double step_fraction(double vx, double vy, double dt, double radius)
+double step_fraction(double vx, double vy, double vz, double dt, double radius)
 {
-  // sqrt, not hypot: no overflow to guard against here, and it runs per disk per step
-  return std::sqrt(vx * vx + vy * vy) * dt / radius;
+  // sqrt, not hypot: no overflow to guard against here, and it runs per particle per step
+  return std::sqrt(vx * vx + vy * vy + vz * vz) * dt / radius;
 }
 
-double overlap_fraction(double dx, double dy, double ri, double rj)
+double overlap_fraction(double dx, double dy, double dz, double ri, double rj)
 {
-  return (ri + rj - std::sqrt(dx * dx + dy * dy)) / std::min(ri, rj);
+  return (ri + rj - std::sqrt(dx * dx + dy * dy + dz * dz)) / std::min(ri, rj);
 }
 
 namespace {
@@ -60,7 +60,7 @@ AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *
       if (s.nonfinite++ == 0) s.first_nonfinite = static_cast<long>(i);
       continue;
     }
-    const double frac = step_fraction(v[i][0], v[i][1], dt, radius[i]);
+    const double frac = step_fraction(v[i][0], v[i][1], v[i][2], dt, radius[i]);
     if (s.argmax_step < 0 || frac > s.max_step_fraction) {
       s.max_step_fraction = frac;
       s.argmax_step = static_cast<long>(i);
@@ -87,7 +87,8 @@ OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
       const int j = firstneigh[i][jj] & neighmask;
       if (!(mask[j] & groupbit)) continue;
       const double frac =
-          overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], radius[i], radius[j]);
+          overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2], radius[i],
+                           radius[j]);
       if (frac > s.max_fraction) s = {frac, i, j};
     }
   }

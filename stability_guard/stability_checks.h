@@ -17,14 +17,14 @@ constexpr double TIME_STEP_POORLY_RESOLVED = 0.3;
 constexpr double TIME_STEP_SAFE = 0.15;
 // the inertial number below which a test is quasi-static (GDR MiDi 2004)
 constexpr double INERTIAL_QUASI_STATIC = 1e-3;
-// |v| dt / r: a quasi-static test moves disks less than this per step ...
+// |v| dt / r: a quasi-static test moves particles less than this per step ...
 constexpr double STEP_FRACTION_QUASI_STATIC = 1e-3;
 // ... and a run that has blown up more than this
 constexpr double STEP_FRACTION_BLOWN_UP = 0.05;
 
-// sqrt(m/k): the time scale of a linear contact k on the lightest disk m. Its
+// sqrt(m/k): the time scale of a linear contact k on the lightest particle m. Its
 // period is 2 pi sqrt(m_eff/k); velocity Verlet is stable below dt = 2 sqrt(m_eff/k)
-// for one spring, lower with several contacts per disk. The published set-up
+// for one spring, lower with several contacts per particle. The published set-up
 // runs at 0.15 of it; above 0.3 we warn. Non-positive input -> 0.
 double contact_time(double mass_min, double stiffness_max);
 
@@ -38,17 +38,17 @@ double safe_time_step(double fraction, double mass_min, double stiffness_max);
 // (GDR MiDi 2004): quasi-static below 1e-3. p <= 0 -> +inf.
 double inertial_number(double strain_rate, double diameter, double density, double pressure);
 
-// Distance a disk moves in one step, as a fraction of its radius: |v| dt / r
-// (2D, v = (vx, vy)). A quasi-static test moves disks well below 1e-3 of their
+// Distance a particle moves in one step, as a fraction of its radius: |v| dt / r
+// (in 2D vz is 0). A quasi-static test moves particles well below 1e-3 of their
 // radius per step; several percent means the contacts are no longer resolved.
-double step_fraction(double vx, double vy, double dt, double radius);
+double step_fraction(double vx, double vy, double vz, double dt, double radius);
 
-// Overlap of two disks as a fraction of the smaller radius: (ri + rj - |xi - xj|)
+// Overlap of two particles as a fraction of the smaller radius: (ri + rj - |xi - xj|)
 // / min(ri, rj); negative when they do not touch.
-double overlap_fraction(double dx, double dy, double ri, double rj);
+double overlap_fraction(double dx, double dy, double dz, double ri, double rj);
 
 // One pass over the owned atoms of a group: the first non-finite position,
-// velocity or force, and the disk that moves the largest fraction of its radius
+// velocity or force, and the particle that moves the largest fraction of its radius
 // per step. Arrays as LIGGGHTS keeps them (x[i][0..2] etc.); `in_group` masks
 // the atoms to look at (mask[i] & groupbit).
 struct AtomScan {
@@ -68,10 +68,10 @@ AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *
 enum class StepVerdict { Within, AboveLimit, BlownUp };
 StepVerdict judge_step_fraction(double fraction, double limit);
 
-// The largest disk-disk overlap (overlap_fraction) over a neighbour list as
+// The largest particle-particle overlap (overlap_fraction) over a neighbour list as
 // LIGGGHTS keeps it: ilist[0..inum), numneigh[i], firstneigh[i][..] (& neighmask
 // gives the index), both atoms of a pair in the group. Touching pairs only: 0
-// and no pair when no two disks of the group overlap.
+// and no pair when no two particles of the group overlap.
 struct OverlapScan {
   double max_fraction = 0;
   long i = -1, j = -1; // the pair (i from ilist), -1 if none

@@ -74,10 +74,10 @@ std::string step_error(int tag, double fraction, long long step, double limit, S
 {
   const std::string what = verdict == StepVerdict::BlownUp
                                ? std::string("the run has gone unstable (kinetic energy blow-up)")
-                               : format("faster than 'move' allows (unstable runs move disks > %g)",
+                               : format("faster than 'move' allows (unstable runs move particles > %g)",
                                         STEP_FRACTION_BLOWN_UP);
   return format("atom %d moved %.3g of its radius in one step at step %lld (limit %g; a "
-                "quasi-static test moves disks < %g): ",
+                "quasi-static test moves particles < %g): ",
                 tag, fraction, step, limit, STEP_FRACTION_QUASI_STATIC) +
          what + "; " + unstable_hint(time_step_ratio);
 }
@@ -85,7 +85,7 @@ std::string step_error(int tag, double fraction, long long step, double limit, S
 std::string lost_error(long long lost, long long step, double time_step_ratio)
 {
   return format("%lld atom(s) of the group were lost since the start of the run (at step %lld): "
-                "disks left the box through a wall or the membrane; check that walls and "
+                "particles left the box through a wall or the membrane; check that walls and "
                 "platens enclose the sample, and ",
                 lost, step) +
          unstable_hint(time_step_ratio);
@@ -103,13 +103,14 @@ std::string overlap_warning(int tag_a, int tag_b, double fraction, long long ste
 }
 
 std::string inertial_warning(double inertial, double limit, long long step, double strain_rate,
-                             double d50, double density, double pressure, int vector_entry)
+                             double d50, double density, int dimension, double pressure,
+                             int vector_entry)
 {
   return format("inertial number I = %.3g > %g at step %lld (strain rate %.3g 1/s, d50 %.3g m, "
-                "density %.3g kg/m^2 per unit thickness, pressure %.3g Pa): the test is not "
-                "quasi-static; lower the loading rate (warned once; f_ID[%d] is the current "
-                "value)",
-                inertial, limit, step, strain_rate, d50, density, pressure, vector_entry);
+                "density %.3g %s, pressure %.3g Pa): the test is not quasi-static; lower the "
+                "loading rate (warned once; f_ID[%d] is the current value)",
+                inertial, limit, step, strain_rate, d50, density,
+                dimension == 3 ? "kg/m^3" : "kg/m^2 per unit thickness", pressure, vector_entry);
 }
 
 std::string inertial_overflow(long long step, double strain_rate, double pressure)

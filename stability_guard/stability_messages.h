@@ -41,10 +41,12 @@ std::string lost_error(long long lost, long long step, double time_step_ratio);
 std::string overlap_warning(int tag_a, int tag_b, double fraction, long long step, double limit,
                             int vector_entry);
 
-// The inertial number `inertial` of strain rate, D50, density and pressure is
-// above `limit`; `vector_entry` as for overlap_warning.
+// The inertial number `inertial` of strain rate, D50, density (per unit thickness
+// in 2D, per volume in 3D: `dimension`) and pressure is above `limit`;
+// `vector_entry` as for overlap_warning.
 std::string inertial_warning(double inertial, double limit, long long step, double strain_rate,
-                             double d50, double density, double pressure, int vector_entry);
+                             double d50, double density, int dimension, double pressure,
+                             int vector_entry);
 
 // What is wrong when R and P are valid but I overflows (InertialStatus::Overflow).
 std::string inertial_overflow(long long step, double strain_rate, double pressure);

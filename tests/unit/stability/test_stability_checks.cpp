@@ -36,16 +36,21 @@ TEST(InertialNumber, HandWorked)
 TEST(StepFraction, HandWorked)
 {
   // |(3, 4)| m/s * 1e-5 s / 1 mm = 0.05
-  EXPECT_NEAR(step_fraction(3.0, 4.0, 1e-5, 1e-3), 0.05, 1e-15);
+  EXPECT_NEAR(step_fraction(3.0, 4.0, 0.0, 1e-5, 1e-3), 0.05, 1e-15);
+  // in 3D vz counts: |(2, 3, 6)| = 7 m/s * 1e-5 s / 1 mm = 0.07
+  EXPECT_NEAR(step_fraction(2.0, 3.0, 6.0, 1e-5, 1e-3), 0.07, 1e-15);
 }
 
 TEST(OverlapFraction, HandWorked)
 {
   // radii 1 and 0.5 mm, centres 1.4 mm apart: overlap 0.1 mm / 0.5 mm = 0.2
-  EXPECT_NEAR(overlap_fraction(1.4e-3, 0.0, 1e-3, 0.5e-3), 0.2, 1e-12);
+  EXPECT_NEAR(overlap_fraction(1.4e-3, 0.0, 0.0, 1e-3, 0.5e-3), 0.2, 1e-12);
   // apart by 0.6 * sqrt(2)... along a diagonal: distance 1.6 mm -> gap 0.1 mm -> -0.2
-  EXPECT_NEAR(overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 1e-3, 0.5e-3),
-              -0.2, 1e-12);
+  EXPECT_NEAR(
+      overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 0.0, 1e-3, 0.5e-3), -0.2,
+      1e-12);
+  // in 3D along (2, 3, 6)/7: distance 1.4 mm -> overlap 0.1 mm -> 0.2
+  EXPECT_NEAR(overlap_fraction(0.4e-3, 0.6e-3, 1.2e-3, 1e-3, 0.5e-3), 0.2, 1e-12);
 }
 
 namespace {
@@ -86,6 +91,16 @@ TEST(ScanAtoms, FastestDiskOfTheGroup)
   EXPECT_EQ(s.first_nonfinite, -1);
   EXPECT_EQ(s.argmax_step, 2);
   EXPECT_NEAR(s.max_step_fraction, 0.02, 1e-15);
+}
+
+TEST(ScanAtoms, MotionAlongZCountsIn3D)
+{
+  Atoms a(2);
+  a.vs[0] = {0.0, 2.0, 0.0};  // 0.02
+  a.vs[1] = {0.0, 0.0, -3.0}; // 0.03: a sphere falling along z
+  const AtomScan s = a.scan(1e-5);
+  EXPECT_EQ(s.argmax_step, 1);
+  EXPECT_NEAR(s.max_step_fraction, 0.03, 1e-15);
 }
 
 TEST(ScanAtoms, NonFiniteValuesAreCountedNotMeasured)
@@ -172,6 +187,17 @@ TEST(ScanOverlaps, LargestOverlapOfTheGroup)
   EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
   EXPECT_EQ(s.i, 0);
   EXPECT_EQ(s.j, 1);
+}
+
+TEST(ScanOverlaps, SpheresStackedAlongZ)
+{
+  // radius 1 mm each, 0-1 at 1.9 mm along x (0.1) and 0-2 at 1.6 mm along z (0.4): a
+  // measure in the xy plane alone would see 0-2 as the same point (overlap 2)
+  Contacts c({{0, 0, 0}, {1.9e-3, 0, 0}, {0, 0, 1.6e-3}}, {1e-3, 1e-3, 1e-3}, {{1, 2}, {}, {}});
+  const OverlapScan s = c.scan();
+  EXPECT_NEAR(s.max_fraction, 0.4, 1e-12);
+  EXPECT_EQ(s.i, 0);
+  EXPECT_EQ(s.j, 2);
 }
 
 TEST(ScanOverlaps, NeighbourMaskAndNoContact)

@@ -32,12 +32,12 @@ TEST(GuardErrors, NonFiniteAndLost)
             "time step if it is above 0.15 x sqrt(m_min/k_n) (not checked: no kn peratomtypepair "
             "table)");
   EXPECT_EQ(lost_error(1, 1000, 0.00367),
-            "1 atom(s) of the group were lost since the start of the run (at step 1000): disks "
+            "1 atom(s) of the group were lost since the start of the run (at step 1000): particles "
             "left the box through a wall or the membrane; check that walls and platens enclose "
             "the sample, and the time step is safe (0.00367 x sqrt(m_min/k_n), at most 0.15): "
             "reduce the servo gain or the loading rate");
   // steps beyond 32 bits (bigint)
-  EXPECT_NE(lost_error(2, 5000000000LL, 0.2).find("(at step 5000000000): disks"),
+  EXPECT_NE(lost_error(2, 5000000000LL, 0.2).find("(at step 5000000000): particles"),
             std::string::npos);
 }
 
@@ -45,12 +45,12 @@ TEST(GuardErrors, StepBlownUpOrAboveTheLimit)
 {
   EXPECT_EQ(step_error(1, 0.1, 0, 0.05, StepVerdict::BlownUp, 2.0),
             "atom 1 moved 0.1 of its radius in one step at step 0 (limit 0.05; a quasi-static "
-            "test moves disks < 0.001): the run has gone unstable (kinetic energy blow-up); "
+            "test moves particles < 0.001): the run has gone unstable (kinetic energy blow-up); "
             "reduce the time step (now 2 x sqrt(m_min/k_n); 0.15 is safe), the servo gain or the "
             "loading rate");
   EXPECT_EQ(step_error(1, 0.0200001, 0, 1e-9, StepVerdict::AboveLimit, 0.00367),
             "atom 1 moved 0.02 of its radius in one step at step 0 (limit 1e-09; a quasi-static "
-            "test moves disks < 0.001): faster than 'move' allows (unstable runs move disks > "
+            "test moves particles < 0.001): faster than 'move' allows (unstable runs move particles > "
             "0.05); the time step is safe (0.00367 x sqrt(m_min/k_n), at most 0.15): reduce the "
             "servo gain or the loading rate");
 }
@@ -69,10 +69,14 @@ TEST(GuardWarnings, OverlapNamesThePairInOrder)
 
 TEST(GuardWarnings, InertialNumber)
 {
-  EXPECT_EQ(inertial_warning(0.0017912, 0.001, 1, 0.05, 1.75e-3, 2e8, 1e5, 4),
+  EXPECT_EQ(inertial_warning(0.0017912, 0.001, 1, 0.05, 1.75e-3, 2e8, 2, 1e5, 4),
             "inertial number I = 0.00179 > 0.001 at step 1 (strain rate 0.05 1/s, d50 0.00175 m, "
             "density 2e+08 kg/m^2 per unit thickness, pressure 1e+05 Pa): the test is not "
             "quasi-static; lower the loading rate (warned once; f_ID[4] is the current value)");
+  EXPECT_EQ(inertial_warning(0.00268, 0.001, 1, 0.02, 3e-3, 2650, 3, 1e5, 4),
+            "inertial number I = 0.00268 > 0.001 at step 1 (strain rate 0.02 1/s, d50 0.003 m, "
+            "density 2.65e+03 kg/m^3, pressure 1e+05 Pa): the test is not quasi-static; lower "
+            "the loading rate (warned once; f_ID[4] is the current value)");
   EXPECT_EQ(inertial_overflow(10, 1.0, 1e-300),
             "the inertial number overflows at step 10 (R = 1, P = 1e-300); the pressure is too "
             "small for the rate");
