@@ -80,12 +80,19 @@ def table(runs, seeds):
     return "\n".join(lines)
 
 
-def polydata_points(path):
-    """The points of an ascii VTK PolyData file (as fix membrane3d writes them)."""
+def polydata_points(path, corners_only=False):
+    """The points of an ascii VTK PolyData file (as fix membrane3d writes them); with
+    corners_only, the membrane's corners only, without the escaped spheres (point data
+    'escaped' = 1)."""
     with open(path) as f:
         text = f.read()
     block = re.search(r"<Points>\s*<DataArray[^>]*>([^<]*)</DataArray>", text).group(1)
-    return np.array(block.split(), dtype=float).reshape(-1, 3)
+    points = np.array(block.split(), dtype=float).reshape(-1, 3)
+    if corners_only:
+        escaped = re.search(r'<DataArray[^>]*Name="escaped"[^>]*>([^<]*)</DataArray>', text)
+        if escaped:
+            points = points[np.array(escaped.group(1).split(), dtype=float) == 0]
+    return points
 
 
 def half_width_profile(points, bin_width=0.002):
@@ -103,13 +110,17 @@ def half_width_profile(points, bin_width=0.002):
     return np.array(z), np.array(half)
 
 
-def membrane_frames(out, seed):
-    pvd = os.path.join(out, "membrane_%s_membrane.pvd" % seed)
+def pvd_frames(pvd):
+    """[(step, path)] of the frames of fix membrane3d's collection PVD ([] without it)."""
     if not os.path.exists(pvd):
         return []
     with open(pvd) as f:
         entries = re.findall(r'timestep="(\d+)" part="0" file="([^"]+)"', f.read())
-    return [(int(step), os.path.join(out, name)) for step, name in entries]
+    return [(int(step), os.path.join(os.path.dirname(pvd), name)) for step, name in entries]
+
+
+def membrane_frames(out, seed):
+    return pvd_frames(os.path.join(out, "membrane_%s_membrane.pvd" % seed))
 
 
 def plot(runs, seeds, out, png):
