@@ -3,7 +3,9 @@
 #   examples/triaxial/run_triaxial.sh [--quick] [--np N]
 # --quick: a 20 mm cylinder (about 290 spheres, under a minute); default the 50 mm
 # cylinder (about 7 700 spheres, about 6 minutes on 2 cores). Writes
-# out/triaxial/triaxial.txt, .png, .log and the compressed sample's restart.
+# out/triaxial/triaxial.txt, .png, .log, the compressed sample's restart and the
+# ParaView files in triaxial.paraview/ (run.pvd: the spheres and the membrane in shear;
+# membrane.pvd: the membrane from the isotropic stage on).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -22,7 +24,11 @@ while [ $# -gt 0 ]; do
 done
 out=$root/out/triaxial
 mkdir -p "$out"
+rm -rf "$out/triaxial.paraview"   # the frames of an earlier run (another size) would mix in
 cd "$here"
 mpirun --allow-run-as-root --oversubscribe -np "$np" "$root/build/app/liggghts-membrane" \
   -in in.triaxial -log "$out/triaxial.log" -var out "$out/triaxial" "${vars[@]}"
+if [ -d "$out/triaxial.paraview" ]; then
+  /usr/bin/python3 "$root/scripts/paraview_collection.py" "$out/triaxial.paraview"
+fi
 /usr/bin/python3 plot_triaxial.py "$out/triaxial.txt"

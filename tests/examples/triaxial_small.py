@@ -7,7 +7,17 @@ about 290 spheres): physical sanity of each stage and of the membrane.
   shear to 10 % axial strain: every output row has membrane spheres, the membrane
     reaches both platens (no warning), escapees stay below 2 % of the spheres, q
     rises above 0.3 p by 5 % strain, the volume changes by less than 10 %, and the
-    detections follow 'every'.
+    detections follow 'every';
+  the fabric in shear (compute fabric): the anisotropies >= 0, Z_m from 3 to 8 and
+    C_n <= Z_m in every row, the contact normals' anisotropy a growing and along the
+    axis (a_zz > 0) at the end; the Love-Weber stresses within 0.7-1.1 of the
+    platen's sigma_1 and of p (the contacts with the platens and the membrane's
+    loads are not in its sum);
+  the ParaView files by default (vtkstrain 0.01): the membrane's frames from the
+    isotropic stage to the end of the shear, on table rows, closed, between the
+    platens; the spheres' files at the frames' steps in shear; the radius profile of
+    each frame on a row (plot_triaxial.py) giving R_out to 2 %, and the end's bulge
+    (mid-height against the platens) larger than the start's.
 
 Usage: triaxial_small.py EXE NP"""
 import os
@@ -15,10 +25,15 @@ import re
 import sys
 import tempfile
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from example_run import ROOT, Checks, run, table  # noqa: E402
 
 EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
+sys.path.insert(0, EXAMPLE)
+from plot_triaxial import polydata_points, radius_profile  # noqa: E402
+
 P = 1e5
 
 
@@ -56,6 +71,53 @@ def check_frames(check, frames, height):
               "frame %d: lateral load sum %.2g, %.2g N" % (step, load[0], load[1]))
 
 
+def check_fabric(check, t):
+    """compute fabric's columns in shear: sane values, the expected trends."""
+    for name in ("a", "a_n", "a_t"):
+        check(min(t[name]) >= 0, "%s >= 0 in every row (min %.3g)" % (name, min(t[name])))
+    check(3 <= min(t["Zm"]) and max(t["Zm"]) <= 8,
+          "Z_m from %.3g to %.3g (3 to 8)" % (min(t["Zm"]), max(t["Zm"])))
+    check(all(0 < cn <= zm for cn, zm in zip(t["Cn"], t["Zm"])), "0 < C_n <= Z_m in every row")
+    check(t["a"][-1] > t["a"][0] and t["a_zz"][-1] > 0,
+          "a from %.3g to %.3g, a_zz %.3g at the end (normals along the axis)"
+          % (t["a"][0], t["a"][-1], t["a_zz"][-1]))
+    s1 = [q + P for q in t["q[Pa]"]]
+    zz = [lw / s for lw, s in zip(t["sLW_zz[Pa]"], s1)]
+    check(0.7 < min(zz) and max(zz) < 1.1,
+          "Love-Weber sigma_zz / platen sigma_1 from %.3f to %.3f" % (min(zz), max(zz)))
+    lateral = [v / P for v in t["sLW_xx[Pa]"] + t["sLW_yy[Pa]"]]
+    check(0.7 < min(lateral) and max(lateral) < 1.1,
+          "Love-Weber sigma_xx, sigma_yy / p from %.3f to %.3f" % (min(lateral), max(lateral)))
+
+
+def check_paraview(check, folder, t, frames):
+    """The ParaView files written by default: the membrane's frames on table rows, from
+    the isotropic stage to the end, the spheres' beside them in shear; the radius
+    profile of each frame on a row gives R_out, and the membrane bulges."""
+    steps = [f[0] for f in frames]
+    rows = dict(zip(t["step"], range(len(t["step"]))))
+    shear = [s for s in steps if s >= t["step"][0]]
+    check(len(frames) - len(shear) >= 1 and len(shear) >= 8 and steps[-1] == t["step"][-1],
+          "membrane frames: %d before the shear, %d in it, the last at step %d (last row %d)"
+          % (len(frames) - len(shear), len(shear), steps[-1], t["step"][-1]))
+    missing = [s for s in shear if not os.path.exists(os.path.join(folder, "particles_%d.vtp" % s))]
+    check(not missing, "the spheres' files at the %d frames in shear (missing: %s)"
+          % (len(shear), missing))
+    worst, bulge = 0.0, {}
+    for step in steps:
+        z, r = radius_profile(polydata_points(os.path.join(folder, "membrane_%d.vtp" % step),
+                                              corners_only=True))
+        if step in rows:
+            worst = max(worst, abs(np.sqrt(np.mean(r ** 2)) / t["R_out[m]"][rows[step]] - 1))
+        middle = np.abs(z - 0.5 * (z.min() + z.max())) < (z.max() - z.min()) / 6
+        bulge[step] = r[middle].mean() - 0.5 * (r[0] + r[-1])
+    check(worst < 0.02, "the profiles' sqrt(mean R^2) is R_out to %.2f %% (within 2 %%)" % (100 * worst))
+    start = max((s for s in steps if s < t["step"][0]), default=steps[0])
+    check(bulge[steps[-1]] > bulge[start] and bulge[steps[-1]] > 0,
+          "bulge (mid-height R - the platens' R): %.3f mm at the start, %.3f mm at the end"
+          % (1000 * bulge[start], 1000 * bulge[steps[-1]]))
+
+
 def main():
     exe, np_ = sys.argv[1], sys.argv[2]
     check = Checks()
@@ -64,7 +126,7 @@ def main():
         log = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe,
                    "-in", "in.triaxial", "-var", "R", "0.01", "-var", "hfill", "0.06",
                    "-var", "nsettle", "8000", "-var", "ncompress", "10000",
-                   "-var", "nhold", "4000", "-var", "vtkevery", "4000", "-var", "out", out],
+                   "-var", "nhold", "4000", "-var", "out", out],
                   out + ".log", cwd=EXAMPLE)
         compressed = float(re.search(r"TRIAXIAL compressed: sigma1 = (\S+) Pa", log).group(1))
         iso = re.search(r"TRIAXIAL isotropic: sigma1 = (\S+) Pa, V_out = (\S+) m3, R_out = (\S+) m, "
@@ -72,19 +134,24 @@ def main():
         atoms = int(re.search(r"^ +1 +(\d+) ", log, re.M).group(1))
         e1_end = float(re.search(r"TRIAXIAL done: e1 = (\S+),", log).group(1))
         t = table(out + ".txt")
-        frames = vtk_frames(out + "_membrane.pvd")
+        frames = vtk_frames(os.path.join(out + ".paraview", "membrane.pvd"))
+        check_paraview(check, out + ".paraview", t, frames)
         rows, detections = {}, {}
         for every in ("auto", "1"):
             o = os.path.join(tmp, "every_" + every)
             run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np_, exe,
                  "-in", "in.triaxial", "-var", "R", "0.01", "-var", "hfill", "0.06",
                  "-var", "nsettle", "8000", "-var", "ncompress", "10000", "-var", "nhold", "2000",
-                 "-var", "strain", "0.03", "-var", "every", every, "-var", "out", o],
+                 "-var", "strain", "0.03", "-var", "every", every, "-var", "vtkstrain", "0",
+                 "-var", "out", o],
                 o + ".log", cwd=EXAMPLE)
             with open(o + ".txt") as f:
-                lines = [l.split() for l in f if not l.startswith("#")]
-            rows[every] = [l[:-1] for l in lines]  # all but the detection counter
-            detections[every] = float(lines[-1][-1]) if lines else 0.0
+                lines = f.read().splitlines()
+            names = lines[0].lstrip("#").split()
+            kept = [k for k, n in enumerate(names) if n != "detections"]
+            body = [l.split() for l in lines[1:] if l and not l.startswith("#")]
+            rows[every] = [[l[k] for k in kept] for l in body]  # all but the detection counter
+            detections[every] = float(body[-1][names.index("detections")]) if body else 0.0
     check(abs(compressed / P - 1) < 0.05, "compressed in the cylinder: sigma1 = %.0f Pa" % compressed)
     sigma1, spheres, escaped = float(iso.group(1)), float(iso.group(4)), float(iso.group(5))
     check(abs(sigma1 / P - 1) < 0.10, "isotropic with the membrane: sigma1 = %.0f Pa" % sigma1)
@@ -108,6 +175,7 @@ def main():
           "every auto gives the table of every 1 to the last digit (%d rows)" % len(rows["1"]))
     check(0 < detections["auto"] < detections["1"],
           "every auto detects less: %d against %d" % (detections["auto"], detections["1"]))
+    check_fabric(check, t)
     check_frames(check, frames, float(re.search(r"TRIAXIAL compressed: sigma1 = \S+ Pa at H = (\S+) m",
                                                 log).group(1)))
     if check.failures:
