@@ -54,6 +54,14 @@ Every RESULT the straight run prints must be printed by the split run as often,
 with the same values (exactly, or within '#@ restart-tolerance': |a - b| <=
 RTOL max(|a|, |b|) + ATOL; a NaN never matches); the test fails when no RESULT
 was compared. The '#@ expect' / '#@ output' lines are checked on both runs.
+
+--restart --write-np W --np N (W != N): the restart files are written on W ranks
+and read on N. The split copy first runs on W ranks (the writer); then the split
+run on N ranks reads the writer's split<k>.restart at each split (it still writes
+its own, unread). Its RESULTs are compared with the straight run on N ranks within
+'#@ tolerance' (the cross-rank tolerance of --compare, default 1e-12 relative):
+after the split they come from a state computed on W ranks. The expectations are
+checked on all three runs.
 tests/README.md lists the restart-checked scripts. Example:
 
     #@ restart
@@ -128,8 +136,10 @@ def result_lists(output):
 DEFAULT_RESTART_PRE = ["atom_modify map array", "communicate single vel yes"]
 
 
-def split_script(text, dirs):
-    """The split-run copy of a '#@ restart' script (see the docstring), or raise ValueError."""
+def split_script(text, dirs, read_dir=None):
+    """The split-run copy of a '#@ restart' script (see the docstring), or raise ValueError.
+    With read_dir, read_restart reads the split<k>.restart that a run in read_dir wrote
+    (--write-np); write_restart still writes the run's own."""
     pre = [d[len("restart-pre"):].strip() for d in dirs if d.startswith("restart-pre ")]
     pre = pre or DEFAULT_RESTART_PRE
     out, definitions, block, nsplit = [], [], None, 0
@@ -152,7 +162,7 @@ def split_script(text, dirs):
             out.append("# --- '#@ split' %d (run_script.py --restart)\n" % nsplit)
             out.append("write_restart   %s\nclear\n" % name)
             out += [c + "\n" for c in pre]
-            out.append("read_restart    %s\n" % name)
+            out.append("read_restart    %s\n" % (os.path.join(read_dir, name) if read_dir else name))
             out += definitions
             out.append("# --- end of '#@ split' %d\n" % nsplit)
             continue
@@ -189,46 +199,74 @@ def compare_restart(straight_out, split_out, rtol, atol):
     return compared, failures
 
 
-def restart_check(exe, np_, script, dirs, work, timeout):
-    """--restart: the straight and the split run print the same RESULTs. Returns failures."""
-    if "restart" not in dirs:
-        return ["%s has no '#@ restart' line" % script]
+def compare_tolerance(dirs):
+    """'#@ tolerance RTOL ATOL': the cross-rank tolerance (default 1e-12 relative)."""
+    rtol, atol = 1e-12, 0.0
+    for d in dirs:
+        if d.startswith("tolerance "):
+            rtol, atol = (float(x) for x in d.split()[1:3])
+    return rtol, atol
+
+
+def restart_tolerance(dirs, cross_ranks=False):
+    """The tolerance of a restart check: '#@ restart-tolerance' (default exact), or for
+    a restart read on another rank count than it was written on, '#@ tolerance'."""
+    if cross_ranks:
+        return compare_tolerance(dirs)
     rtol, atol = 0.0, 0.0
     for d in dirs:
         if d.startswith("restart-tolerance "):
             rtol, atol = (float(x) for x in d.split()[1:3])
+    return rtol, atol
+
+
+def restart_check(exe, np_, script, dirs, work, timeout, write_np=None):
+    """--restart: the straight and the split run print the same RESULTs; with write_np
+    (!= np_) the split run reads restart files written on write_np ranks. Returns failures."""
+    if "restart" not in dirs:
+        return ["%s has no '#@ restart' line" % script]
+    cross = write_np is not None and write_np != np_
+    rtol, atol = restart_tolerance(dirs, cross)
     with open(script) as f:
         text = f.read()
+    writer = os.path.join(work, "write")
     try:
         split_text = split_script(text, dirs)
+        read_text = split_script(text, dirs, writer) if cross else split_text
     except ValueError as e:
         return ["%s: %s" % (script, e)]
     testdir = os.path.dirname(script)
+    runs = [("straight", np_, None), ("split", np_, read_text)]
+    if cross:
+        runs.insert(0, ("write", write_np, split_text))
     outputs, failures = {}, []
-    for label in ("straight", "split"):
+    for label, n, copy in runs:
         folder = os.path.join(work, label)
         os.makedirs(folder)
         path = script
-        if label == "split":
+        if copy is not None:
             path = os.path.join(folder, "split.in")
             with open(path, "w") as f:
-                f.write(split_text)
-        rc, out = run(exe, np_, path, folder, timeout, testdir)
+                f.write(copy)
+        rc, out = run(exe, n, path, folder, timeout, testdir)
         if rc != 0:
-            failures.append("%s run on np=%d failed (rc=%d):\n%s" % (label, np_, rc, out[-3000:]))
+            failures.append("%s run on np=%d failed (rc=%d):\n%s" % (label, n, rc, out[-3000:]))
+            if label == "write":
+                return failures
             continue
         outputs[label] = out
-        failures += check_expectations(dirs, out, "%s np=%d" % (label, np_))
-    if len(outputs) < 2:
+        failures += check_expectations(dirs, out, "%s np=%d" % (label, n))
+    if "straight" not in outputs or "split" not in outputs:
         return failures
+    tag = "np=%d" % np_ if not cross else "np=%d read from np=%d" % (np_, write_np)
     compared, bad = compare_restart(outputs["straight"], outputs["split"], rtol, atol)
     for line in bad:
-        print("FAIL restart np=%d %s" % (np_, line))
-    failures += ["np=%d: %s" % (np_, line) for line in bad]
+        print("FAIL restart %s %s" % (tag, line))
+    failures += ["%s: %s" % (tag, line) for line in bad]
     if compared == 0:
         failures.append("no RESULT compared between the straight and the split run")
-    print("compared %d RESULT values of the straight and the split run on np=%d (rtol %g, atol %g)"
-          % (compared, np_, rtol, atol))
+    print("compared %d RESULT values of the straight and the split run on %s (rtol %g, atol %g)"
+          % (compared, tag, rtol, atol))
     return failures
 
 
@@ -287,9 +325,14 @@ def main():
     ap.add_argument("--restart", action="store_true",
                     help="'#@ restart': a run split at '#@ split' by write_restart / read_restart "
                          "prints the RESULTs of the straight run")
+    ap.add_argument("--write-np", type=int, default=None,
+                    help="with --restart: write the restart files on this many ranks, read "
+                         "them on --np (RESULTs within '#@ tolerance')")
     ap.add_argument("--timeout", type=int, default=600)
     ap.add_argument("script")
     a = ap.parse_args()
+    if a.write_np is not None and (not a.restart or a.write_np < 1):
+        ap.error("--write-np needs --restart and a rank count >= 1")
     a.exe = os.path.abspath(a.exe)
 
     script = os.path.abspath(a.script)
@@ -323,13 +366,10 @@ def main():
                     failures.append("case '%s': rc=%d, wanted '%s' in output; got:\n%s"
                                     % (command, rc, expect, tail))
         elif a.restart:
-            failures += restart_check(a.exe, a.np, script, dirs, work, a.timeout)
+            failures += restart_check(a.exe, a.np, script, dirs, work, a.timeout, a.write_np)
         elif a.compare:
             ranks = [int(x) for d in dirs if d.startswith("ranks ") for x in d.split()[1:]]
-            rtol, atol = 1e-12, 0.0
-            for d in dirs:
-                if d.startswith("tolerance "):
-                    rtol, atol = (float(x) for x in d.split()[1:3])
+            rtol, atol = compare_tolerance(dirs)
             runs = {}
             for n in ranks:
                 rc, out = run(a.exe, n, script, work, a.timeout)

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""run_script.py's restart mode without LIGGGHTS: the split-run copy of a script and
-the comparison of the two outputs (CTest: script.run_script.selftest)."""
+"""run_script.py's restart mode without LIGGGHTS: the split-run copy of a script (also
+reading the files of a run on other ranks, --write-np), the comparison of the two
+outputs and its tolerance (CTest: script.run_script.selftest)."""
 import unittest
 
 import run_script
@@ -61,6 +62,38 @@ class SplitScript(unittest.TestCase):
                      "#@ end-definitions\n#@ split\n"):
             with self.assertRaises(ValueError, msg=text):
                 run_script.split_script(text, [])
+
+
+class RestartOnOtherRanks(unittest.TestCase):
+    """--write-np: the split run reads the restart files a run on other ranks wrote."""
+
+    def test_read_from_the_writer(self):
+        lines = split(SCRIPT)
+        other = run_script.split_script(SCRIPT, [], "/w/write").splitlines()
+        # the same copy but for the files read: its own still written, the writer's read
+        self.assertEqual(len(other), len(lines))
+        self.assertIn("write_restart   split1.restart", other)
+        self.assertIn("read_restart    /w/write/split1.restart", other)
+        self.assertIn("read_restart    /w/write/split2.restart", other)
+        self.assertNotIn("read_restart    split1.restart", other)
+        self.assertEqual([a for a, b in zip(lines, other) if a != b],
+                         ["read_restart    split1.restart", "read_restart    split2.restart"])
+
+    def test_tolerance(self):
+        dirs = ["restart", "restart-tolerance 1e-15 0", "tolerance 1e-9 1e-12"]
+        self.assertEqual(run_script.restart_tolerance(dirs), (1e-15, 0.0))
+        self.assertEqual(run_script.restart_tolerance(dirs, cross_ranks=True), (1e-9, 1e-12))
+        self.assertEqual(run_script.restart_tolerance(["restart"]), (0.0, 0.0))
+        self.assertEqual(run_script.restart_tolerance(["restart"], cross_ranks=True), (1e-12, 0.0))
+
+    def test_needs_restart_mode(self):
+        import io
+        import sys
+        from unittest import mock
+        for argv in (["--write-np", "2", "x.in"], ["--restart", "--write-np", "0", "x.in"]):
+            with mock.patch.object(sys, "argv", ["run_script.py", "--exe", "e"] + argv), \
+                 mock.patch("sys.stderr", io.StringIO()), self.assertRaises(SystemExit):
+                run_script.main()
 
 
 class Compare(unittest.TestCase):
