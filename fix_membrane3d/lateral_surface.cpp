@@ -350,15 +350,31 @@ std::vector<Eigen::Vector3d> offsets_of_checked(const MembraneTopology &topology
                                                 const std::vector<Sphere> &spheres,
                                                 const Platens &platens)
 {
-  std::vector<NormalSums> sums(spheres.size());
-  for (const auto &f : topology.facets) {
+  // the facet's vector area seen at the sphere of its vertex j (at an image: mirrored)
+  const auto facet_area_at = [&](const std::array<MembraneVertex, 3> &f,
+                                 std::array<Eigen::Vector3d, 3> &seen) {
     std::array<Eigen::Vector3d, 3> x;
     for (int j = 0; j < 3; ++j) x[j] = image_position(spheres[f[j].sphere].x, f[j].image, platens);
     const Eigen::Vector3d a = facet_vector_area(x[0], x[1], x[2]);
-    const double area = a.norm();
+    for (int j = 0; j < 3; ++j) seen[j] = f[j].image != 0 ? Eigen::Vector3d(a.x(), a.y(), -a.z()) : a;
+    return a.norm();
+  };
+  // Where the flood's boundary passes through a flat sliver (a face with a sphere dented
+  // by round-off, mirrored at a platen) it folds: a facet lies on its neighbours facing
+  // the other way. Its pressure cancels theirs, and it must not pull the vertex in
+  // either: a facet facing against its sphere's net outward area is left out.
+  std::vector<Eigen::Vector3d> net(spheres.size(), Eigen::Vector3d::Zero());
+  std::array<Eigen::Vector3d, 3> seen;
+  for (const auto &f : topology.facets) {
+    facet_area_at(f, seen);
+    for (int j = 0; j < 3; ++j) net[f[j].sphere] += seen[j];
+  }
+  std::vector<NormalSums> sums(spheres.size());
+  for (const auto &f : topology.facets) {
+    const double area = facet_area_at(f, seen);
     if (!(area > 0)) continue;
-    const Eigen::Vector3d mirrored(a.x(), a.y(), -a.z()); // the facet at an image, seen at its sphere
-    for (const MembraneVertex &v : f) sums[v.sphere].add(v.image != 0 ? mirrored : a, area);
+    for (int j = 0; j < 3; ++j)
+      if (seen[j].dot(net[f[j].sphere]) > 0) sums[f[j].sphere].add(seen[j], area);
   }
   std::vector<Eigen::Vector3d> offset(spheres.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
