@@ -145,12 +145,13 @@ Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<
     net += f;
     magnitude += f.norm();
   }
-  if (net.head<2>().norm() > CLOSURE_ROUND_OFF * magnitude)
+  // a load that is not finite fails the test too (NaN compares false with everything)
+  if (!(net.head<2>().norm() <= CLOSURE_ROUND_OFF * magnitude))
     lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads have a lateral net force of " +
                             number_text(net.head<2>().norm()) + " N (of " + number_text(magnitude) +
                             " N in all) at step " + std::to_string(lmp->update->ntimestep) +
-                            ": the membrane is not closed; this is a fault of fix membrane3d; "
-                            "please report it with the input script")
+                            (net.allFinite() ? ": the membrane is not closed" : ": a load is not finite") +
+                            "; this is a fault of fix membrane3d; please report it with the input script")
                                .c_str());
   return net;
 }
