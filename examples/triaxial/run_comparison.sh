@@ -49,6 +49,9 @@ for s in $seeds; do
   echo "[$(date +%T)] seed $s: preparing the sample"
   run "$out/prepare_$s.log" -in in.cuboid_prepare -var seed "$s" -var out "$out/cuboid_$s" \
     -var W "$W" "${size[@]}"
+  # the frames of an earlier run of this seed (another size, --quick) would stay in
+  # the collection (fix membrane3d keeps the frames before its first step: a restart's)
+  rm -f "$out/membrane_${s}_membrane.pvd" "$out/membrane_${s}_membrane_"*.vtp
   for b in walls membrane; do
     echo "[$(date +%T)] seed $s: shear with the $b"
     run "$out/${b}_$s.log" -in in.cuboid_shear -var sample "$out/cuboid_$s" -var W "$W" \
