@@ -22,8 +22,8 @@ Directives:
                                 'variable var index value' for each var=value
                                 (the set-ups read their parameters as index
                                 variables); 'setup none': the commands do it all
-  ranks CONFIG, CONFIG...       run on each: '1', '2', '2 grid PX PY 1' (the
-                                grid reaches 'processors ${px} ${py} 1' of
+  ranks CONFIG, CONFIG...       run on each: '1', '2', '2 grid PX PY PZ' (the
+                                grid reaches 'processors ${px} ${py} ${pz}' of
                                 setups/prelude.inc); default '1'
   error TEXT                    the run must fail (non-zero exit, no signal, no
                                 timeout) with TEXT in its output
@@ -184,9 +184,7 @@ def script_text(case, grid, stage="main"):
     prepare stage and the main stage has only its own lines."""
     lines = ["# case %s (%s:%d)" % (case.name, os.path.basename(case.path), case.line)]
     if grid:
-        lines += ["variable        px index %s" % grid[0], "variable        py index %s" % grid[1]]
-        if grid[2] != "1":
-            raise SystemExit("case %s: the grid of a 2D box is PX PY 1" % case.name)
+        lines += ["variable        %s index %s" % (p, n) for p, n in zip(("px", "py", "pz"), grid)]
     lines += ["variable        %s index %s" % kv for kv in case.vars]
     if stage == "prepare" or case.prepare_np is None:
         lines += ["include         ${testdir}/%s.inc" % s for s in case.setups]
