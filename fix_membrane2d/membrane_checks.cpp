@@ -13,6 +13,7 @@
 
 #include "fix_membrane2d.h"
 #include "membrane_output.h"
+#include "membrane_setup.h"
 #include "style_args.h"
 #include "vtk_series.h"
 
@@ -20,16 +21,7 @@ using namespace LAMMPS_NS;
 
 void check_atom_setup(LAMMPS *lmp, const char *prefix)
 {
-  auto stop = [&](const char *text) {
-    lmp->error->all(FLERR, (std::string(prefix) + text).c_str());
-  };
-  if (lmp->domain->dimension != 2) stop("requires dimension 2");
-  if (!lmp->atom->radius_flag) stop("requires atom style sphere (granular)");
-  if (lmp->atom->tag_enable == 0 || lmp->atom->map_style == 0)
-    stop("requires atom IDs and an atom map (atom_modify map array)");
-  if (lmp->domain->xperiodic)
-    stop("the box is periodic in x: the sample would wrap across the boundary and its outermost "
-         "disks have no left and right; use boundary f f p (or m m p)");
+  check_membrane_setup(lmp, prefix, 2);
 }
 
 void check_platens_order(LAMMPS *lmp, const char *prefix, const ScalarInput &ylo_in, double ylo,

@@ -13,6 +13,8 @@
 #include "update.h"
 
 #include "allgather.h"
+#include "atom_faults.h"
+#include "group_checksum.h"
 #include "membrane_output.h"
 #include "membrane_record.h"
 #include "stability_checks.h"
@@ -266,11 +268,17 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
                        "cannot hold a sample whose outer disks fly off; check the time step, the "
                        "pressure and the platens")
                           .c_str());
-  for (double v : recv_)
-    if (!std::isfinite(v))
-      error->all(FLERR, (prefix_ + "a chain particle position is not finite at step " + step +
-                         ": the run has gone unstable; reduce the time step or the loading rate")
-                            .c_str());
+  bool finite = true;
+  for (double v : recv_) finite = finite && std::isfinite(v);
+  if (!finite) {
+    // every rank holds recv_: all come here, and find the atom together
+    const std::string fault = group_atom_fault(lmp, groupbit_, 2);
+    error->all(FLERR, (prefix_ + (fault.empty() ? "a chain particle position is not finite at "
+                                                  "step " + step + ": the run has gone unstable; "
+                                                  "reduce the time step or the loading rate"
+                                                : fault))
+                          .c_str());
+  }
   for (int k = LEFT; k <= RIGHT; k++) {
     sides[k].chain_disks.resize(chains[k].active ? chains[k].chain_tags.size() : 0);
     sides[k].chain_types.resize(sides[k].chain_disks.size());
@@ -332,14 +340,7 @@ double MembraneGather::gathered_bytes() const
 
 std::uint64_t MembraneGather::group_checksum()
 {
-  std::uint64_t sum = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit_)
-      sum += membrane::disk_checksum(atom->tag[i], atom->type[i], atom->x[i][0], atom->x[i][1],
-                                     atom->radius[i]);
-  std::uint64_t total = 0;
-  MPI_Allreduce(&sum, &total, 1, MPI_UINT64_T, MPI_SUM, world);
-  return total;
+  return ::group_checksum(lmp, groupbit_, 2);
 }
 
 void MembraneGather::group_y_range(double &lo, double &hi)

@@ -5,7 +5,6 @@
 // definition, then the state of membrane_state.h. No LIGGGHTS.
 
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -44,28 +43,6 @@ void put_watch(RestartRecordWriter &out, const DetectionWatch &w);
 void get_tags(RestartRecordReader &in, std::vector<long> &out);
 void get_disks(RestartRecordReader &in, std::vector<Disk> &out);
 void get_watch(RestartRecordReader &in, DetectionWatch &out);
-
-// A hash of one disk's identity, type, radius and position: their sum over a
-// group (any order, any rank split) tells whether the group changed.
-inline std::uint64_t disk_checksum(long tag, int type, double x, double y, double r)
-{
-  auto mix = [](std::uint64_t h) { // splitmix64 finaliser
-    h += 0x9e3779b97f4a7c15ull;
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-    return h ^ (h >> 31);
-  };
-  auto bits = [](double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-  };
-  std::uint64_t h = mix(static_cast<std::uint64_t>(tag));
-  h = mix(h ^ static_cast<std::uint64_t>(type));
-  h = mix(h ^ bits(x));
-  h = mix(h ^ bits(y));
-  return mix(h ^ bits(r));
-}
 
 } // namespace membrane
 

@@ -46,6 +46,15 @@ PowerFlood::PowerFlood(const std::vector<Sphere> &spheres, const std::vector<boo
   for (std::size_t i = 0; i < spheres.size(); ++i)
     points.emplace_back(power::weighted_point(spheres[i]), static_cast<int>(i));
   triangulation_.insert(points.begin(), points.end());
+  if (triangulation_.dimension() < 3) {
+    const auto images = static_cast<std::size_t>(std::count(sealed.begin(), sealed.end(), true));
+    throw FlatSample("the " + count_text(spheres.size() - images, "sphere", "spheres") +
+                     (images > 0 ? " and their " + count_text(images, "image", "images") +
+                                       " in the platens"
+                                 : std::string()) +
+                     " lie " + (triangulation_.dimension() < 2 ? "on one line" : "in one plane") +
+                     ": they enclose no volume for a membrane to wrap");
+  }
   for (auto c = triangulation_.all_cells_begin(); c != triangulation_.all_cells_end(); ++c) {
     c->info() = static_cast<int>(cells_.size());
     cells_.push_back(c);

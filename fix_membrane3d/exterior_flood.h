@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 namespace membrane3d {
@@ -56,7 +57,15 @@ struct FloodCells {
                                         // group and of the largest other one
 };
 
-// Throws std::invalid_argument for fewer than four spheres, a radius that is not
+// The spheres and their platen images span no volume: their centres lie in one plane
+// or on one line (a one-sphere-thick wall, a single column, one layer), so no closed
+// surface encloses them and the triangulation has no cells to flood.
+struct FlatSample : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// Throws FlatSample for spheres that span no volume, std::invalid_argument for fewer
+// than four spheres, a radius that is not
 // positive or a tolerance that is negative or not finite, naming the value. The
 // facets come in a canonical order (each starting at its lowest sphere, sorted), so
 // that the same boundary is the same list whatever the triangulation's history.

@@ -11,23 +11,22 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
 #include "atom.h"
 #include "comm.h"
-#include "domain.h"
 #include "error.h"
 #include "group.h"
-#include "modify.h"
 #include "update.h"
 
 #include "frictionless_type.h"
+#include "group_checksum.h"
 #include "membrane3d_checks.h"
 #include "membrane3d_record.h"
 #include "membrane3d_skin.h"
+#include "membrane_setup.h"
 #include "style_args.h"
 
 using namespace LAMMPS_NS;
@@ -68,12 +67,7 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
   : Fix(lammps, narg, arg), inputs("zlo", "zhi", USE_PRESSURE, USE_ZLO, USE_ZHI), frames(lammps),
     types(lammps)
 {
-  if (domain->dimension != 3) fail("requires dimension 3", "for 2D samples use fix membrane2d");
-  if (!atom->radius_flag) fail("requires atom style sphere", "use atom_style granular");
-  if (atom->tag_enable == 0 || atom->map_style == 0)
-    fail("requires atom IDs and an atom map", "use atom_modify map array");
-  if (domain->zperiodic)
-    fail("the box is periodic in z", "the platens bound the sample in z: use boundary f f f");
+  check_membrane_setup(lmp, PREFIX, 3);
 
   StyleArgs args(lmp, PREFIX, narg, arg, 3);
   while (args.more()) {
@@ -164,7 +158,17 @@ void FixMembrane3d::evaluate_inputs()
 
 void FixMembrane3d::setup_pre_force(int vflag)
 {
+  if (has_checksum && group_checksum(lmp, groupbit, 3) != checksum) forget_membrane();
   pre_force(vflag);
+}
+
+// The group changed between two runs: its member IDs may name other spheres now.
+void FixMembrane3d::forget_membrane()
+{
+  member_tags.clear();
+  topology = membrane3d::MembraneTopology();
+  detected_at.clear();
+  decided_step = -1;
 }
 
 void FixMembrane3d::setup(int vflag)
@@ -178,6 +182,8 @@ void FixMembrane3d::setup(int vflag)
 void FixMembrane3d::post_run()
 {
   types.restore();
+  checksum = group_checksum(lmp, groupbit, 3);
+  has_checksum = true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -239,6 +245,7 @@ void FixMembrane3d::detect()
   GatheredSpheres all;
   gather_group(lmp, groupbit, all);
   check_between_platens(lmp, PREFIX, all, platens);
+  check_enough_spheres(lmp, PREFIX, group->names[igroup], all.spheres.size());
   std::vector<int> index;
   try {
     topology = membrane3d::members_only(
@@ -246,6 +253,8 @@ void FixMembrane3d::detect()
                       : detect_near_members(all, member_tags, platens, tolerance),
         index);
     if (every == AUTO) automatic.set_members(index);
+  } catch (const membrane3d::FlatSample &e) {
+    fail(e.what(), "it needs a sample two spheres across in x and y between z platens");
   } catch (const std::exception &e) {
     fail(e.what(), "the group must be one packing whose spheres are linked (gaps within the "
                    "tolerance)");
@@ -276,19 +285,11 @@ void FixMembrane3d::place_and_apply()
   } catch (const std::exception &e) {
     fail(e.what(), "the membrane found at the last detection cannot be placed");
   }
-  if (!(membrane.reaches_lo && membrane.reaches_hi) && !warned_rim && comm->me == 0) {
-    const std::string which = !membrane.reaches_lo ? "lower (zlo)" : "upper (zhi)";
-    error->warning(FLERR, (std::string(PREFIX) + "the membrane does not reach the " + which +
-                           " platen at step " + std::to_string(update->ntimestep) +
-                           ": no sphere is within the tolerance of it, so the membrane closes over "
-                           "that end of the sample and presses on it")
-                              .c_str());
-  }
-  if (!(membrane.reaches_lo && membrane.reaches_hi)) warned_rim = true;
+  warn_if_open(lmp, PREFIX, membrane, warned_rim);
 
   std::vector<Eigen::Vector3d> load =
       membrane3d::membrane_loads(membrane, members.spheres.size(), pressure);
-  const Eigen::Vector3d net = check_closed(lmp, PREFIX, load);
+  const Eigen::Vector3d net = check_closed(lmp, PREFIX, load, pressure);
   membrane3d::add_escape_loads(membrane, members.spheres, pressure, load);
 
   double **f = atom->f;
@@ -342,6 +343,8 @@ void FixMembrane3d::write_restart(FILE *fp)
   state.detections = detections;
   state.member_tags = member_tags;
   state.topology = topology;
+  state.has_checksum = true;
+  state.checksum = group_checksum(lmp, groupbit, 3);
   if (every == AUTO) automatic.save(state);
   const std::vector<double> rec = membrane3d::write_record(state);
   if (comm->me == 0) {
@@ -374,6 +377,8 @@ void FixMembrane3d::restart(char *raw)
   decided_step = static_cast<bigint>(state.decided_step);
   member_tags = state.member_tags;
   topology = state.topology;
+  has_checksum = state.has_checksum;
+  checksum = state.checksum;
   if (every == AUTO) automatic.restore(state);
 }
 

@@ -20,6 +20,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #ifndef LIGGGHTS_MEMBRANE_FIX_MEMBRANE3D_H
 #define LIGGGHTS_MEMBRANE_FIX_MEMBRANE3D_H
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -95,6 +96,11 @@ class FixMembrane3d : public Fix {
   std::vector<int> member_tags;
   bigint last_detection = -1;
   bigint decided_step = -1; // the last step pre_force decided on
+  // the group at the end of the last run (or when the restart file was written): a
+  // run that starts on another group (delete_atoms renumbers the IDs) finds the
+  // membrane anew
+  bool has_checksum = false;
+  std::uint64_t checksum = 0;
   std::vector<membrane3d::Sphere> detected_at; // the members then (after a restart: at its start)
   double detections = 0.0;
 
@@ -109,6 +115,7 @@ class FixMembrane3d : public Fix {
   bool centres_placed = false; // output[VOLUME] is this step's
 
   void evaluate_inputs();
+  void forget_membrane();
   void detect();
   void wear_types(const GatheredSpheres &g);
   void place_and_apply();

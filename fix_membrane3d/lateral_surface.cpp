@@ -233,8 +233,6 @@ void check_placement(const MembraneTopology &topology, const std::vector<Sphere>
                                     std::to_string(spheres.size()));
 }
 
-constexpr double kLongestOffset = 2.0; // in radii; a cube's corner is sqrt(3)
-
 // outer_face_offsets without the checks (place_membrane has made them)
 std::vector<Eigen::Vector3d> offsets_of_checked(const MembraneTopology &topology,
                                                 const std::vector<Sphere> &spheres,
@@ -269,9 +267,8 @@ std::vector<Eigen::Vector3d> offsets_of_checked(const MembraneTopology &topology
   std::vector<Eigen::Vector3d> offset(spheres.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (sums[i].b.isZero(0)) continue;
+    // at most a box corner's sqrt 3 r from the centre (outer_face_offset.h)
     Eigen::Vector3d o = least_squares_offset(sums[i]) * spheres[i].r;
-    const double longest = kLongestOffset * spheres[i].r;
-    if (o.norm() > longest) o *= longest / o.norm();
     // Never past a platen plane: the vertex's image would come inside, and the facets
     // of images only, beyond the platen, are not part of the membrane (it would open).
     const double z = spheres[i].x.z();

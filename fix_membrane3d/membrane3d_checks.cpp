@@ -12,6 +12,8 @@
 #include "modify.h"
 #include "update.h"
 
+#include "atom_faults.h"
+
 #include "fix_membrane3d.h"
 #include "style_args.h"
 #include "vtk_series.h"
@@ -99,7 +101,13 @@ void check_between_platens(LAMMPS *lmp, const char *prefix, const GatheredSphere
                            const membrane3d::Platens &platens)
 {
   for (std::size_t k = 0; k < g.spheres.size(); k++) {
-    const double z = g.spheres[k].x.z();
+    const membrane3d::Sphere &s = g.spheres[k];
+    // a fault of the input (a run gone unstable, a radius set to 0) named as such
+    if (atom_is_faulty(s.x.data(), 3, s.r))
+      lmp->error->all(FLERR, (std::string(prefix) + atom_fault_text(g.tags[k], s.x.data(), 3, s.r,
+                                                                    lmp->update->ntimestep))
+                                 .c_str());
+    const double z = s.x.z();
     if (z > platens.lo && z < platens.hi) continue;
     lmp->error->all(FLERR, (std::string(prefix) + "atom " + std::to_string(g.tags[k]) +
                             " at z = " + number_text(z) + " is not between zlo = " +
@@ -108,6 +116,31 @@ void check_between_platens(LAMMPS *lmp, const char *prefix, const GatheredSphere
                             "; the platens must enclose every sphere centre of the group")
                                .c_str());
   }
+}
+
+void check_enough_spheres(LAMMPS *lmp, const char *prefix, const char *group, std::size_t spheres)
+{
+  if (spheres >= 4) return;
+  lmp->error->all(FLERR, (std::string(prefix) + "the group '" + group + "' has " +
+                          count_text(spheres, "atom", "atoms") + " at step " +
+                          std::to_string(lmp->update->ntimestep) +
+                          "; a membrane needs a sample of at least four spheres (were atoms lost "
+                          "from the box?)")
+                             .c_str());
+}
+
+void warn_if_open(LAMMPS *lmp, const char *prefix, const membrane3d::LateralSurface &membrane,
+                  bool &warned)
+{
+  if (membrane.reaches_lo && membrane.reaches_hi) return;
+  if (!warned && lmp->comm->me == 0)
+    lmp->error->warning(FLERR, (std::string(prefix) + "the membrane does not reach the " +
+                                (!membrane.reaches_lo ? "lower (zlo)" : "upper (zhi)") +
+                                " platen at step " + std::to_string(lmp->update->ntimestep) +
+                                ": no sphere is within the tolerance of it, so the membrane "
+                                "closes over that end of the sample and presses on it")
+                                   .c_str());
+  warned = true;
 }
 
 void check_platens_in_order(LAMMPS *lmp, const char *prefix, const ScalarInput &lo,
@@ -137,7 +170,8 @@ void check_tolerance(LAMMPS *lmp, const char *prefix, const std::string &text, d
                              .c_str());
 }
 
-Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<Eigen::Vector3d> &load)
+Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<Eigen::Vector3d> &load,
+                             double pressure)
 {
   Eigen::Vector3d net = Eigen::Vector3d::Zero();
   double magnitude = 0.0;
@@ -145,11 +179,19 @@ Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<
     net += f;
     magnitude += f.norm();
   }
+  const std::string step = std::to_string(lmp->update->ntimestep);
+  // loads that overflow (an absurd pressure) are the input's fault, not the membrane's
+  if (!std::isfinite(magnitude) && std::isfinite(pressure))
+    lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads at step " + step +
+                            " are not finite: the pressure " + number_text(pressure) +
+                            " times the facets' areas overflows; give the confining pressure in "
+                            "the units of the box (force/area)")
+                               .c_str());
   // a load that is not finite fails the test too (NaN compares false with everything)
-  if (!(net.head<2>().norm() <= CLOSURE_ROUND_OFF * magnitude))
+  if (!(net.head<2>().norm() <= CLOSURE_ROUND_OFF * magnitude) || !std::isfinite(magnitude))
     lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads have a lateral net force of " +
                             number_text(net.head<2>().norm()) + " N (of " + number_text(magnitude) +
-                            " N in all) at step " + std::to_string(lmp->update->ntimestep) +
+                            " N in all) at step " + step +
                             (net.allFinite() ? ": the membrane is not closed" : ": a load is not finite") +
                             "; this is a fault of fix membrane3d; please report it with the input script")
                                .c_str());

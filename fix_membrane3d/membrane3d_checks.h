@@ -19,9 +19,19 @@ namespace LAMMPS_NS {
 class Fix;
 }
 
-// Every sphere centre of `g` strictly between the platens (else names the atom).
+// Every sphere of `g` with a finite centre strictly between the platens and a positive
+// radius (else names the atom and the step).
 void check_between_platens(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const GatheredSpheres &g,
                            const membrane3d::Platens &platens);
+
+// At least the four spheres of a tetrahedron in the group (named) at a detection.
+void check_enough_spheres(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const char *group,
+                          std::size_t spheres);
+
+// Warns once (`warned`) when the membrane does not reach a platen: it then closes over
+// that end of the sample.
+void warn_if_open(LAMMPS_NS::LAMMPS *lmp, const char *prefix,
+                  const membrane3d::LateralSurface &membrane, bool &warned);
 
 // The platens in order: zlo below zhi at this step (naming both inputs: either may
 // be the variable that moved).
@@ -34,11 +44,12 @@ void check_platens_in_order(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const Sc
 void check_tolerance(LAMMPS_NS::LAMMPS *lmp, const char *prefix, const std::string &text,
                      double tolerance, double d, double most, double usual);
 
-// The loads' net force, after checking that it has no lateral part beyond round-off:
-// a closed membrane with its rims in the platen planes has none, and a run must not go
-// on with loads that have one.
+// The loads' net force, after checking that they are finite (`pressure` times the
+// areas can overflow) and have no lateral part beyond round-off: a closed membrane
+// with its rims in the platen planes has none, and a run must not go on with loads
+// that have one.
 Eigen::Vector3d check_closed(LAMMPS_NS::LAMMPS *lmp, const char *prefix,
-                             const std::vector<Eigen::Vector3d> &load);
+                             const std::vector<Eigen::Vector3d> &load, double pressure);
 
 // Warns once (`warned`) when a member of `now` is more than the tolerance from where it
 // was when the membrane was found at step `since` (`at`, in the same order; empty after

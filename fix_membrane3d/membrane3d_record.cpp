@@ -6,7 +6,7 @@ namespace membrane3d {
 
 namespace {
 const double MAGIC = 3.0e7 + 3;  // fix membrane3d's records, not membrane2d's
-const int VERSION = 3; // 2: the detection's spheres; 3: the decided step
+const int VERSION = 4; // 2: the detection's spheres; 3: the decided step; 4: the checksum
 } // namespace
 
 std::vector<double> write_record(const Membrane3dState &s) {
@@ -38,6 +38,10 @@ std::vector<double> write_record(const Membrane3dState &s) {
     w.put(s.sample[k].r);
   }
   w.put(s.decided_step);
+  // two exact halves: a double holds 53 bits
+  w.put(s.has_checksum ? 1.0 : 0.0);
+  w.put(static_cast<double>(s.checksum >> 32));
+  w.put(static_cast<double>(s.checksum & 0xffffffffu));
   return w.finish();
 }
 
@@ -82,6 +86,11 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
     }
   }
   if (r.version() >= 3) in.decided_step = r.get();
+  if (r.version() >= 4) {
+    in.has_checksum = r.get() != 0.0;
+    const auto hi = static_cast<std::uint64_t>(r.get()), lo = static_cast<std::uint64_t>(r.get());
+    in.checksum = (hi << 32) | lo;
+  }
   if (!r.finished()) return r.error();
   s = in;
   return "";

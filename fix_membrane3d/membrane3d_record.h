@@ -1,14 +1,16 @@
 // The restart record of fix membrane3d (no LIGGGHTS: unit-tested in
 // tests/unit/membrane3d): its definition, the last detection (the topology over the
 // member atoms' IDs and its step; with every auto, the spheres it was made on) and
-// the detection counter. Records of versions 1 (without the spheres) and 2 (without the
-// decided step) are read.
+// the detection counter, and a checksum of the group then (common/group_checksum.h).
+// Records of versions 1 (without the spheres), 2 (without the decided step) and 3
+// (without the checksum) are read.
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 
 #include "lateral_surface.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,10 @@ struct Membrane3dState {
   std::vector<Sphere> sample;
   Platens sample_platens{0, 0};
   double window_steps = 0, window_detections = 0, unwatched_until = -1; // DenseDetections
+  // the group when the record was written (version 4): a read_restart followed by a
+  // delete_atoms that renumbered it must not keep the membrane by atom ID
+  bool has_checksum = false;
+  std::uint64_t checksum = 0;
 };
 
 std::vector<double> write_record(const Membrane3dState &state);

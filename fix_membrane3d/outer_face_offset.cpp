@@ -18,6 +18,17 @@ constexpr double kUnconstrained = 1e-3;
 // (a well-conditioned M, every eigenvalue above kUnconstrained of the largest, has
 // det above 3.7e-8 trace^3)
 constexpr double kRoundOffDet = 1e-9;
+// The farthest a vertex may lie from its sphere's centre, in radii: the corner of a
+// box, where three faces at right angles meet (sqrt 3), with a margin for a jittered
+// corner. Facets whose normals span a narrow fan (a large sphere beside a column of
+// small ones) constrain a direction so weakly that the solution runs out along it: a
+// vertex 2 r from the centre (3.2 r unbounded), a fin out of the sample.
+constexpr double kMostOffset = 1.7320508075688772 * 1.01;
+// A direction whose eigenvalue of the normals' matrix is below this fraction of the
+// largest is poorly constrained: where the offset is too long it is left out there
+// (the 20 mm ball beside 1 mm spheres: 3 %; the apex of a cone of three facets at 63
+// degrees from its axis, which is only shortened: 50 %).
+constexpr double kPoorlyConstrained = 0.1;
 
 // The eigenvalues of a symmetric positive semi-definite 3 x 3 matrix in closed form
 // (Smith 1961), smallest and largest: accurate to round-off of the largest.
@@ -74,7 +85,7 @@ Eigen::Vector3d eigenvector(const Eigen::Matrix3d &m, double lambda)
 // Most membrane spheres have none: M's inverse from its cofactors (a 3 x 3 per membrane
 // sphere and step); the others, on flat faces and straight edges, solve in the
 // directions left.
-Eigen::Vector3d least_squares_offset(const NormalSums &sums)
+Eigen::Vector3d unbounded_offset(const NormalSums &sums)
 {
   const std::array<double, 6> &m = sums.m;
   const Cofactors cofactors(m);
@@ -104,6 +115,26 @@ Eigen::Vector3d least_squares_offset(const NormalSums &sums)
   const std::array<double, 6> r = {raised(0, 0), raised(0, 1), raised(0, 2),
                                    raised(1, 1), raised(1, 2), raised(2, 2)};
   return Cofactors(r).solve(sums.b - v.dot(sums.b) * v);
+}
+
+// The offset within kMostOffset: beyond it, the poorly constrained directions are
+// left out one by one, weakest first, and what is still beyond is shortened to it.
+Eigen::Vector3d least_squares_offset(const NormalSums &sums)
+{
+  const Eigen::Vector3d o = unbounded_offset(sums);
+  if (o.norm() <= kMostOffset) return o;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(sums.matrix()); // ascending eigenvalues
+  const Eigen::Vector3d lambda = eigen.eigenvalues();
+  const Eigen::Matrix3d v = eigen.eigenvectors();
+  Eigen::Vector3d out = o;
+  for (int weak = 0; weak < 2 && out.norm() > kMostOffset &&
+                     lambda[weak] < kPoorlyConstrained * lambda[2];
+       ++weak) {
+    out.setZero();
+    for (int k = weak + 1; k < 3; ++k) out += v.col(k).dot(sums.b) / lambda[k] * v.col(k);
+  }
+  return out.norm() <= kMostOffset ? out : out * (kMostOffset / out.norm());
 }
 
 } // namespace membrane3d

@@ -40,8 +40,12 @@ struct NormalSums {
 
 // The offset o (in radii) from one sphere's sums: M o = b solved where M constrains it
 // (an eigenvalue above 1e-3 of the largest); along a flat face's tangent plane or a
-// straight edge's direction o has no component. Finite for the sums of one or more
-// facets of positive area (a sphere on no facet gets no offset: the caller's case).
+// straight edge's direction o has no component. |o| is at most that of a box's corner,
+// sqrt 3 (with a 1 % margin): beyond it the poorly constrained directions (eigenvalue
+// below 10 % of the largest) are left out, weakest first (a large sphere beside small
+// ones, whose facets' normals span a narrow fan), and what is still beyond is shortened. Finite
+// for the sums of one or more facets of positive area (a sphere on no facet gets no
+// offset: the caller's case).
 Eigen::Vector3d least_squares_offset(const NormalSums &sums);
 
 } // namespace membrane3d

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -218,7 +219,13 @@ bool skin_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &
     skin_index.push_back(static_cast<int>(i));
   }
   if (left.empty() || skin.size() < 4) return false;
-  const PowerFlood flood(skin, skin_sealed, tolerance);
+  std::unique_ptr<PowerFlood> flat_or_not;
+  try {
+    flat_or_not = std::make_unique<PowerFlood>(skin, skin_sealed, tolerance);
+  } catch (const FlatSample &) {
+    return false; // a flat skin says nothing of the whole: flood it all
+  }
+  const PowerFlood &flood = *flat_or_not;
   const power::Triangulation &t = flood.triangulation();
 
   // the dry cells next to flooded ones (the sample's group's shell)

@@ -269,6 +269,33 @@ TEST(LateralSurface, SpheresOutOfReachAreNoPacking)
   EXPECT_THROW(membrane3d::lateral_surface(s, {-1, 7}, radius), std::runtime_error);
 }
 
+// Spheres that span no volume with their platen images (a one-sphere-thick wall
+// between touching platens, a column, a layer far from its platens) have no cells to
+// flood: FlatSample, saying which, where the flood once read cells that were not
+// tetrahedra (a segmentation fault).
+TEST(LateralSurface, AFlatSampleIsRefused)
+{
+  const auto message = [](const std::vector<Sphere> &s, const Platens &platens) {
+    try {
+      membrane3d::lateral_surface(s, platens, radius);
+    } catch (const membrane3d::FlatSample &e) {
+      return std::string(e.what());
+    }
+    return std::string("no FlatSample");
+  };
+  const auto wall = simple_cubic(1, 4, 1); // x = 0, y = 0..3, z = 0
+  EXPECT_EQ(message(wall, touching_platens(wall)),
+            "the 4 spheres and their 8 images in the platens lie in one plane: they enclose "
+            "no volume for a membrane to wrap");
+  const auto column = simple_cubic(1, 1, 5);
+  EXPECT_EQ(message(column, touching_platens(column)),
+            "the 5 spheres and their 8 images in the platens lie on one line: they enclose "
+            "no volume for a membrane to wrap");
+  const auto layer = simple_cubic(2, 2, 1);
+  EXPECT_EQ(message(layer, {-20, 20}),
+            "the 4 spheres lie in one plane: they enclose no volume for a membrane to wrap");
+}
+
 TEST(LateralSurface, BadInputIsRefused)
 {
   const auto s = simple_cubic(2, 2, 2);

@@ -59,7 +59,7 @@ TEST(Membrane3dRecord, RoundTrip) {
 // A record of version 1 (before every auto: no schedule, no spheres) is read.
 TEST(Membrane3dRecord, VersionOneIsRead) {
   auto rec = membrane3d::write_record(sample_state());
-  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5 + 1)); // the version-2 and -3 tails
+  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5 + 1 + 3)); // the version-2, -3 and -4 tails
   rec[1] = 1;
   rec[2] = static_cast<double>(rec.size());
   Membrane3dState back;
@@ -73,13 +73,38 @@ TEST(Membrane3dRecord, VersionOneIsRead) {
 // A record of version 2 (before the decided step) is read: no step decided yet.
 TEST(Membrane3dRecord, VersionTwoIsRead) {
   auto rec = membrane3d::write_record(sample_state());
-  rec.resize(rec.size() - 1); // the version-3 tail
+  rec.resize(rec.size() - 1 - 3); // the version-3 and -4 tails
   rec[1] = 2;
   rec[2] = static_cast<double>(rec.size());
   Membrane3dState back;
   ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
   EXPECT_EQ(back.sample_tags, (std::vector<int>{3, 9}));
   EXPECT_EQ(back.decided_step, -1);
+}
+
+// A record of version 3 (before the group's checksum) is read: no checksum, so the
+// membrane is kept as in that version.
+TEST(Membrane3dRecord, VersionThreeIsRead) {
+  auto rec = membrane3d::write_record(sample_state());
+  rec.resize(rec.size() - 3); // the version-4 tail
+  rec[1] = 3;
+  rec[2] = static_cast<double>(rec.size());
+  Membrane3dState back;
+  ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
+  EXPECT_EQ(back.decided_step, 30);
+  EXPECT_FALSE(back.has_checksum);
+}
+
+// All 64 bits of the checksum come back (a double holds 53: two halves).
+TEST(Membrane3dRecord, ChecksumRoundTrip) {
+  Membrane3dState s = sample_state();
+  s.has_checksum = true;
+  s.checksum = 0xfedcba9876543211ull;
+  const auto rec = membrane3d::write_record(s);
+  Membrane3dState back;
+  ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
+  EXPECT_TRUE(back.has_checksum);
+  EXPECT_EQ(back.checksum, 0xfedcba9876543211ull);
 }
 
 TEST(Membrane3dRecord, CutOrCorruptIsRefused) {

@@ -74,3 +74,45 @@ TEST(OuterFaceOffset, NearlyFlatFacesAreTheirNormal)
     }
   EXPECT_EQ(cases, 800);
 }
+
+// The apex of a cone of three facets whose normals are at angle t from its axis z asks
+// for o = z / cos t: past a box's corner (sqrt 3, +1 %) it is not taken. At t = 80
+// degrees the axis is poorly constrained (eigenvalue 3 cos^2 t = 0.09 against
+// 1.5 sin^2 t = 1.45, 6 %): no offset along it, and none across by symmetry. At
+// t = 63.4 degrees (cos t = 1 / sqrt 5, ratio 50 %) the axis is well constrained: the
+// offset sqrt 5 along it is shortened to the bound.
+TEST(OuterFaceOffset, ASharpApexGetsNoFin)
+{
+  const auto cone = [](double t) {
+    NormalSums s;
+    for (int k = 0; k < 3; ++k) {
+      const double phi = 2 * M_PI * k / 3;
+      s.add(Vector3d(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)), 1);
+    }
+    return s;
+  };
+  expect_near(least_squares_offset(cone(80 * M_PI / 180)), Vector3d::Zero(), 1e-12);
+  expect_near(least_squares_offset(cone(std::acos(1 / std::sqrt(5.0)))),
+              Vector3d(0, 0, std::sqrt(3.0) * 1.01), 1e-12);
+  // at 50 degrees 1 / cos t = 1.556 is within the bound: the outer-face solution
+  expect_near(least_squares_offset(cone(50 * M_PI / 180)),
+              Vector3d(0, 0, 1 / std::cos(50 * M_PI / 180)), 1e-12);
+}
+
+// The sums of a 20 mm ball beside a 2 x 2 column of 1 mm spheres (its membrane vertex
+// in a run of the adversarial case ball_beside_column): the least squares
+// ask 3.24 r (then cut to 2 r: a fin a radius out of the ball, 10 mm). The weakest
+// direction has 3 % of the largest eigenvalue: left out, the offset is (-0.10, 1.00, 0),
+// on the ball's surface.
+TEST(OuterFaceOffset, ALargeSphereBesideSmallOnesStaysOnIt)
+{
+  NormalSums s;
+  s.m = {1.4386290052569173e-06, -3.484234154078833e-06, -8.4703294725430034e-22,
+         3.658445861782775e-05,  0,                      9.9611746295303949e-06};
+  s.b = Vector3d(-7.0000000000000007e-06, 3.6750000000000012e-05, 0);
+  const Vector3d o = least_squares_offset(s);
+  EXPECT_LE(o.norm(), std::sqrt(3.0) * 1.01);
+  EXPECT_NEAR(o.norm(), 1.0, 0.02);
+  EXPECT_GT(o.y(), 0.97);
+  EXPECT_NEAR(o.z(), 0, 1e-12);
+}
