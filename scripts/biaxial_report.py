@@ -28,7 +28,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from biaxial import plots, replicates, summary  # noqa: E402
+from biaxial import replicates, summary  # noqa: E402
 from biaxial.readers import InputError  # noqa: E402
 from biaxial.report import load_run  # noqa: E402
 
@@ -93,6 +93,7 @@ def run_name(path):
 
 def make_report(runs, outdir):
     """Figures and tables of the loaded runs; returns the Markdown text."""
+    from biaxial import plots   # matplotlib: only once the runs are read (a refused file is quick)
     os.makedirs(outdir, exist_ok=True)
     plots.stress_strain(runs, os.path.join(outdir, "stress_strain.png"))
     plots.fabric_evolution(runs, os.path.join(outdir, "fabric.png"))
@@ -119,6 +120,7 @@ def load_sample(folder, d50):
 
 def make_replicate_report(samples, names, outdir):
     """The table over the samples and the band plot in outdir; returns the Markdown."""
+    from biaxial import plots
     os.makedirs(outdir, exist_ok=True)
     plots.stress_strain_band(samples, os.path.join(outdir, "stress_strain.png"))
     rows = replicates.aggregate(samples)
@@ -151,6 +153,7 @@ def main(argv=None):
         print(make_replicate_report(samples, names, args.outdir))
         return 0
     runs = [load_run(name, path, args.d50) for name, path in args.named]
+    from biaxial import plots
     plots.assign_colours(runs)
     print(make_report(runs, args.outdir))
     return 0
