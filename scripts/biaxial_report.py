@@ -22,12 +22,14 @@ difference: summary.md, summary.csv, samples.csv with every sample's values) and
 stress_strain.png (mean curves and their 95 % band over the samples).
 """
 import argparse
+import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from biaxial import plots, replicates, summary  # noqa: E402
+from biaxial import replicates, summary  # noqa: E402
+from biaxial.readers import InputError  # noqa: E402
 from biaxial.report import load_run  # noqa: E402
 
 
@@ -61,8 +63,27 @@ def parse_args(argv):
         p.error("two runs are named alike (%s): name them with --names" % " ".join(names))
     for _, path in args.named:
         if not os.path.isfile(path):
-            p.error(f"no OUT table {path}")
+            p.error(f"no OUT table {path}" + (" (a folder: give the table in it, or the folder "
+                                              "with --samples)" if os.path.isdir(path) else ""))
+    twice(p, [path for _, path in args.named], "OUT table")
+    for folder in args.samples or []:
+        if not os.path.isdir(folder):
+            p.error(f"--samples: no folder {folder}")
+    twice(p, args.samples or [], "--samples folder")
+    if not (math.isfinite(args.d50) and args.d50 > 0):
+        p.error(f"--d50 = {args.d50}: needs a positive diameter [length], e.g. 1.75e-3")
     return args
+
+
+def twice(p, paths, what):
+    """Refuse a file or folder given twice (under the same or another name)."""
+    seen = {}
+    for path in paths:
+        key = os.path.realpath(path)
+        if key in seen:
+            same = "" if seen[key] == path else f" (as {seen[key]})"
+            p.error(f"the {what} {path} is given twice{same}: each run or sample once")
+        seen[key] = path
 
 
 def run_name(path):
@@ -72,6 +93,7 @@ def run_name(path):
 
 def make_report(runs, outdir):
     """Figures and tables of the loaded runs; returns the Markdown text."""
+    from biaxial import plots   # matplotlib: only once the runs are read (a refused file is quick)
     os.makedirs(outdir, exist_ok=True)
     plots.stress_strain(runs, os.path.join(outdir, "stress_strain.png"))
     plots.fabric_evolution(runs, os.path.join(outdir, "fabric.png"))
@@ -98,6 +120,7 @@ def load_sample(folder, d50):
 
 def make_replicate_report(samples, names, outdir):
     """The table over the samples and the band plot in outdir; returns the Markdown."""
+    from biaxial import plots
     os.makedirs(outdir, exist_ok=True)
     plots.stress_strain_band(samples, os.path.join(outdir, "stress_strain.png"))
     rows = replicates.aggregate(samples)
@@ -130,6 +153,7 @@ def main(argv=None):
         print(make_replicate_report(samples, names, args.outdir))
         return 0
     runs = [load_run(name, path, args.d50) for name, path in args.named]
+    from biaxial import plots
     plots.assign_colours(runs)
     print(make_report(runs, args.outdir))
     return 0
@@ -138,6 +162,9 @@ def main(argv=None):
 if __name__ == "__main__":
     try:
         sys.exit(main())
+    except (InputError, OSError) as e:   # a file it cannot use: the message, not a traceback
+        print(f"liggghts-membrane-report: {e}", file=sys.stderr)
+        sys.exit(2)
     except BrokenPipeError:  # the table piped into head: the files are written, stop quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         sys.exit(0)

@@ -31,6 +31,7 @@ Deterministic: the same options (and numpy's PCG64 generator) give the same file
 """
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
@@ -55,7 +56,9 @@ def place(rhalf, rfull, width, height, rng, max_tries):
     for i in range(n):
         r, m = rhalf[i], rfull[i]
         if width - 2 * m <= 0 or height - 2 * m <= 0:
-            sys.exit("box too small for a disk of diameter %g" % (2 * m))
+            sys.exit("generate_sample.py: the box %g x %g m is too small for a disk of diameter "
+                     "%g m: a larger --scale (or --width, --height) or a smaller --dmax"
+                     % (width, height, 2 * m))
         for _ in range(max_tries):
             x = m + rng.random() * (width - 2 * m)
             y = m + rng.random() * (height - 2 * m)
@@ -80,8 +83,62 @@ def place(rhalf, rfull, width, height, rng, max_tries):
                 grid[ix][iy].append(i)
                 break
         else:
-            sys.exit("could not place disk %d of %d after %d tries" % (i + 1, n, max_tries))
+            sys.exit("generate_sample.py: could not place disk %d of %d after %d tries (--max-tries): "
+                     "the box is too full at half size; a higher --porosity or a larger --max-tries"
+                     % (i + 1, n, max_tries))
     return pos
+
+
+MAX_DISKS = 10_000_000   # ~1 GB of data file and hours of placement: beyond any run of this project
+
+
+def disk_count(a):
+    """The number of disks that fill (1 - porosity) of the box at full size (a float:
+    inf or beyond MAX_DISKS for absurd options)."""
+    width, height = a.width * a.scale, a.height * a.scale
+    mean_area = math.pi * a.dmin * a.dmax / 4.0
+    return (1.0 - a.porosity) * width * height / mean_area
+
+
+def check_args(p, a):
+    """Every option in its range, or p.error (exit 2) naming it, its value and the range."""
+    def bad(option, value, need):
+        p.error(f"{option} {value}: needs {need}")
+
+    for option, value, need in (("--width", a.width, "a box width [m] > 0"),
+                                ("--height", a.height, "a box height [m] > 0"),
+                                ("--scale", a.scale, "a size factor > 0 (1 = the published sample)"),
+                                ("--dmin", a.dmin, "a diameter [m] > 0"),
+                                ("--dmax", a.dmax, "a diameter [m] > 0"),
+                                ("--density", a.density, "a particle density [kg/m^3] > 0")):
+        if not (math.isfinite(value) and value > 0):
+            bad(option, value, need)
+    if a.zhalf is not None and not (math.isfinite(a.zhalf) and a.zhalf > 0):
+        bad("--zhalf", a.zhalf, "a half z extent [m] > 0 (or leave it out: 0.05 x scale)")
+    if not (math.isfinite(a.porosity) and 0 <= a.porosity < 1):
+        bad("--porosity", a.porosity, "a porosity from 0 to below 1 (0.12)")
+    if not (math.isfinite(a.margin) and 0 <= a.margin <= 100):
+        bad("--margin", a.margin, "a fraction of width and height from 0 to 100 (0.3)")
+    if a.dmin > a.dmax:
+        p.error(f"--dmin {a.dmin} > --dmax {a.dmax}: the smallest diameter must not exceed the largest")
+    if not 0 <= a.seed < 2 ** 63:
+        bad("--seed", a.seed, "an integer from 0 to 2^63 - 1")
+    if not 1 <= a.ntypes <= 1000:
+        bad("--ntypes", a.ntypes, "an integer from 1 to 1000 (3: soil, membrane, walls)")
+    if a.max_tries < 1:
+        bad("--max-tries", a.max_tries, "an integer >= 1")
+    n = disk_count(a)
+    if not n > 0:
+        p.error(f"--porosity {a.porosity} with a box {a.width * a.scale:g} x {a.height * a.scale:g} m "
+                "holds no disk: a larger --scale or a lower --porosity")
+    if not n <= MAX_DISKS:
+        p.error(f"{n:.3g} disks (--scale {a.scale:g}, box {a.width * a.scale:g} x "
+                f"{a.height * a.scale:g} m, d {a.dmin:g}-{a.dmax:g} m): more than {MAX_DISKS:,}; "
+                "a smaller --scale (8: 538 000 disks)")
+    folder = os.path.dirname(os.path.abspath(a.out))
+    if os.path.isdir(a.out) or not os.path.isdir(folder):
+        p.error(f"--out {a.out}: " + ("a folder; give a file name" if os.path.isdir(a.out)
+                                      else f"no folder {os.path.dirname(a.out) or '.'}"))
 
 
 def main():
@@ -109,11 +166,11 @@ def main():
     p.add_argument("--max-tries", type=int, default=100000)
     p.add_argument("--out", default="sample.data", help="output data file (sample.data)")
     a = p.parse_args()
+    check_args(p, a)
 
     width, height = a.width * a.scale, a.height * a.scale
     rng = np.random.Generator(np.random.PCG64(a.seed))
-    mean_area = math.pi * a.dmin * a.dmax / 4.0
-    n = int(math.ceil((1.0 - a.porosity) * width * height / mean_area))
+    n = int(math.ceil(disk_count(a)))
     d = np.sort(diameters(n, a.dmin, a.dmax, rng))[::-1]
     rfull = 0.5 * d
     rhalf = 0.25 * d

@@ -44,11 +44,17 @@ def main(argv):
         print(__doc__)
         return 0 if len(argv) == 2 else 2
     folder = argv[1]
+    if not os.path.isdir(folder):
+        print("paraview_collection.py: no folder %s (the -var vtkdir of the shear)" % folder,
+              file=sys.stderr)
+        return 1
     names = os.listdir(folder)
     if not frames(names)["particles"]:
-        print("paraview_collection.py: no particles_<step>.vtp in %s (was the shear run with "
-              "-var vtkstrain > 0?)" % folder, file=sys.stderr)
-        return 1
+        # not an error: a shear shorter than -var vtkstrain ends before its first frame
+        print("paraview_collection.py: note: no particles_<step>.vtp in %s, no run.pvd written "
+              "(the shear ended before its first ParaView frame, or ran with -var vtkstrain 0)"
+              % folder, file=sys.stderr)
+        return 0
     with open(os.path.join(folder, "run.pvd"), "w") as f:
         f.write(collection(names))
     return 0

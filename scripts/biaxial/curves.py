@@ -63,7 +63,11 @@ def find_peak(ea, ratio, end_points=2):
     ok = np.isfinite(ratio)
     if ok.sum() < 3:
         return NotMeasurable("fewer than 3 output lines")
+    if not np.ptp(ea[ok]) > 0:
+        return NotMeasurable("eps_11 does not change: no axial strain")
     k = int(np.nanargmax(np.where(ok, ratio, -np.inf)))
+    if k == 0:
+        return NotMeasurable("s1/s3 never rises above its value on the first line")
     if k >= len(ratio) - end_points:
         return NotMeasurable(f"s1/s3 still rising at the end, eps_11 = {100 * ea[-1]:.2f} %")
     return k
@@ -128,16 +132,37 @@ def secant_constants(ea, q, el, ea50):
 
 def sliding_slopes(x, y, width):
     """Slope of y(x) by a least-squares line over every window [x_i, x_i + width]
-    (only windows fully inside the data); returns (window centres, slopes)."""
-    centres, slopes = [], []
-    for i in range(len(x)):
-        j = np.searchsorted(x, x[i] + width, side="right")
-        if x[-1] < x[i] + width - 1e-12:
-            break
-        if j - i >= 3:
-            centres.append(0.5 * (x[i] + x[j - 1]))
-            slopes.append(line_slope(x[i:j], y[i:j]))
-    return np.array(centres), np.array(slopes)
+    (x ascending; only windows fully inside the data, of 3 lines or more, with two
+    distinct x); returns (window centres, slopes).
+
+    Linear in the lines: the window sums of x, y, x^2, xy are differences of cumulative
+    sums (of x and y less their means, which keeps the cancellation small), and the
+    slope is the least-squares one, sum (x - xm)(y - ym) / sum (x - xm)^2 of the window
+    (tests/python/test_curves.py checks it against a direct fit of every window)."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    n = len(x)
+    if n == 0:
+        return np.array([]), np.array([])
+    inside = x[-1] >= x + width - 1e-12            # windows fully inside the data: a prefix
+    m = n if inside.all() else int(np.argmin(inside))
+    i = np.arange(m)
+    j = np.searchsorted(x, x[:m] + width, side="right")
+    xc, yc = x - x.mean(), y - y.mean()
+
+    def window_sums(v):
+        c = np.concatenate([[0.0], np.cumsum(v)])
+        return c[j] - c[i]
+
+    cnt = (j - i).astype(float)
+    sx, sy = window_sums(xc), window_sums(yc)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        sxx = window_sums(xc * xc) - sx * sx / cnt
+        sxy = window_sums(xc * yc) - sx * sy / cnt
+    keep = (j - i >= 3)
+    keep[keep] &= x[j[keep] - 1] > x[i[keep]]      # two distinct x at least
+    centres = 0.5 * (x[i[keep]] + x[j[keep] - 1])
+    return centres, sxy[keep] / sxx[keep]
 
 
 def max_dilatancy(ea, ev, width=0.01):
@@ -162,6 +187,14 @@ def correlation(table, x, y):
     if ok.sum() < 3 or np.ptp(a[ok]) == 0 or np.ptp(b[ok]) == 0:
         return NotMeasurable("fewer than 3 lines or a constant column")
     return float(np.corrcoef(a[ok], b[ok])[0, 1])
+
+
+def last_value(table, name):
+    """The column's value on the last line, or NotMeasurable (no column, not finite)."""
+    if not table.has(name):
+        return NotMeasurable(f"no {name} column")
+    v = float(table[name][-1])
+    return v if math.isfinite(v) else NotMeasurable(f"{name} = {v} on the last line")
 
 
 def analyse_curves(table, elastic_fraction=0.3, dilatancy_window=0.01):
@@ -198,11 +231,10 @@ def analyse_curves(table, elastic_fraction=0.3, dilatancy_window=0.01):
     res["psi"], res["ea_psi"], res["dilatancy_rate"] = psi, ea_psi, rate
     res["dilatancy_window"] = dilatancy_window
     res["I_max"] = float(np.nanmax(table["I"])) if table.has("I") else NotMeasurable("no I column")
-    res["f0_end"] = float(table["f0"][-1]) if table.has("f0") else NotMeasurable("no f0 column")
+    res["f0_end"] = last_value(table, "f0")
     for key, column in (("corr_gsi_a", "gsi"), ("corr_gsi_all_a", "gsi_all")):
         res[key] = correlation(table, column, "a")
-    if table.has("sxx_lw"):
-        res["lw_check"] = float(table["sxx_lw"][-1] / s3[-1])
-    else:
-        res["lw_check"] = NotMeasurable("no sxx_lw column")
+    lw = last_value(table, "sxx_lw")
+    res["lw_check"] = float(lw / s3[-1]) if measured(lw) and s3[-1] != 0 else \
+        (lw if not measured(lw) else NotMeasurable("s3 = 0 on the last line"))
     return res

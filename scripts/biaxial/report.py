@@ -7,6 +7,9 @@ from . import curves, field, particle_strain, readers
 from .curves import NotMeasurable, measured
 
 
+DUMP_COLUMNS = ("id", "x", "y", "radius")   # what the field and D50 need of OUT.dump
+
+
 class Run:
     """A run (rigid or membrane): its table, curve analysis, roses, fields and band."""
 
@@ -57,12 +60,16 @@ def load_run(name, prefix, d50_default):
     """Read and analyse the files of one run; missing rose/dump files are noted."""
     run = Run(name, prefix)
     run.table = readers.read_output(prefix)
+    readers.check_table(run.table)
+    if len(run.table) < 3:
+        run.notes.append(f"{os.path.basename(prefix)} has {len(run.table)} data line(s): the peak, "
+                         "the moduli and the angles need 3 or more (a longer shear)")
     if run.table.missing:
         run.notes.append(f"columns missing in {os.path.basename(prefix)}: "
                          + " ".join(run.table.missing))
     run.curves = curves.analyse_curves(run.table)
     if os.path.exists(prefix + ".rose"):
-        run.roses = readers.read_rose(prefix + ".rose")
+        run.roses = readers.read_rose(prefix + ".rose", run.notes)
     else:
         run.notes.append(f"no {os.path.basename(prefix)}.rose: no rose diagrams")
     run.d50, run.d50_source = d50_default, "--d50 (no dump)"
@@ -71,9 +78,9 @@ def load_run(name, prefix, d50_default):
         run.band_reason = NotMeasurable("no dump file")
         run.notes.append(f"no {os.path.basename(prefix)}.dump: no displacement field")
         return run
-    index = readers.dump_steps(prefix + ".dump")
+    index = readers.dump_steps(prefix + ".dump", run.notes)
     if len(index) < 2:
-        run.band_reason = NotMeasurable("fewer than 2 dump frames")
+        run.band_reason = NotMeasurable("fewer than 2 complete dump frames")
         return run
     frames = {}
 
@@ -83,6 +90,12 @@ def load_run(name, prefix, d50_default):
         return frames[i]
 
     first = frame(0)
+    lacking = [c for c in DUMP_COLUMNS if c not in first]
+    if lacking:
+        run.band_reason = NotMeasurable("the dump lacks " + " ".join(lacking))
+        run.notes.append(f"{os.path.basename(prefix)}.dump lacks the column(s) {' '.join(lacking)} "
+                         f"(needs {' '.join(DUMP_COLUMNS)}): no displacement field")
+        return run
     run.d50 = field.d50_by_mass(first["radius"][field.soil_mask(first)])
     run.d50_source = "by mass, from the first dump frame"
     plan, ea = choose_increments(run.table, run.curves["peak_index"], index)

@@ -38,6 +38,21 @@ Directives:
                                 run that needs more must fail cleanly, not abort
   note TEXT                     a comment shown with --list -v
 
+Command-line cases (class G: the report, the sample command, run.sh): '$ COMMAND'
+lines instead of '|' lines, run as one bash script (set -e -o pipefail) in the case's
+fresh temporary folder, with ${repo} (the repository root), ${exe} (the executable),
+${python} (/usr/bin/python3) and ${testdir} (setups/) in its environment:
+
+    case report_header_only
+      error  no data line after the header
+      $ ${python} ${testdir}/report_files.py header out.txt
+      $ ${python} ${repo}/scripts/biaxial_report.py out.txt
+
+'error', 'output', 'no-output', 'expect' (RESULT lines it echoes), 'timeout' and 'note'
+apply; 'setup', 'ranks', 'prepare', 'memory' and 'same' do not. Besides a signal, a
+Python traceback or a bash runtime error (unbound variable, syntax error, integer
+expression expected, command not found, bad substitution) counts as a crash.
+
 The input prints values as:  print "RESULT name ${v}"  (or $(f_mem[1])).
 A run that is killed by a signal (segfault, abort: exit 134/139, an uncaught
 C++ exception), times out, or prints NaN/inf for an expected value fails its
@@ -49,6 +64,8 @@ import concurrent.futures
 import math
 import os
 import re
+import signal
+import subprocess
 import sys
 import tempfile
 from collections import OrderedDict
@@ -58,10 +75,16 @@ sys.path.insert(0, os.path.join(HERE, "..", "scripts"))
 import run_script  # noqa: E402  (tests/scripts/run_script.py: run() and the RESULT format)
 
 SETUPS = os.path.join(HERE, "setups")
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+PYTHON = "/usr/bin/python3"
 DEFAULT_TIMEOUT = 120
 CRASH_TEXT = re.compile(r"Segmentation fault|signal 11|exited on signal|terminate called|"
                         r"Aborted \(core dumped\)|Floating point exception|double free|"
                         r"corrupted|stack smashing|std::bad_alloc")
+# what a command-line tool must never print: its own crash instead of a message
+SHELL_CRASH_TEXT = re.compile(r"Traceback \(most recent call last\)|unbound variable|"
+                              r"syntax error|integer expression expected|command not found|"
+                              r"bad substitution|value too great for base|invalid arithmetic")
 DIRECTIVES = ("setup", "ranks", "error", "output", "no-output", "expect", "finite", "same",
               "timeout", "memory", "note", "prepare")
 
@@ -81,6 +104,7 @@ class Case:
         self.commands = []
         self.prepare_np = None     # 'prepare NP': the set-ups and the '>' lines run first,
         self.prepare_commands = []  # on NP ranks in the same folder (e.g. to write a restart)
+        self.shell = []            # '$' lines: a command-line case (bash, no LIGGGHTS input)
 
     def configs(self):
         return self.ranks or [(1, None)]
@@ -108,6 +132,11 @@ def parse_file(path):
             line = raw.rstrip("\n")
             stripped = line.strip()
             if not stripped or line.startswith("#"):
+                continue
+            if stripped.startswith("$"):
+                if case is None:
+                    raise SystemExit("%s: command line outside a case" % where)
+                case.shell.append(stripped[1:].strip())
                 continue
             if stripped.startswith(">"):
                 if case is None:
@@ -167,7 +196,11 @@ def parse_file(path):
     for c in cases:
         if names.count(c.name) > 1:
             raise SystemExit("%s: case '%s' is defined twice" % (path, c.name))
-        if not c.commands:
+        if c.shell and (c.commands or c.prepare_commands or c.setups or c.vars or c.ranks
+                        or c.prepare_np or c.memory_mb or c.same):
+            raise SystemExit("%s:%d: case '%s': '$' command lines go with error, output, "
+                             "no-output, expect, finite, timeout, note only" % (path, c.line, c.name))
+        if not c.commands and not c.shell:
             raise SystemExit("%s:%d: case '%s' has no input lines" % (path, c.line, c.name))
         if not (c.errors or c.outputs or c.no_outputs or c.expects or c.finite or c.same):
             raise SystemExit("%s:%d: case '%s' has no expectation" % (path, c.line, c.name))
@@ -246,9 +279,78 @@ def check_values(case, vals, label):
     return fails
 
 
+def shell_text(case):
+    return ("# case %s (%s:%d)\nset -e -o pipefail\n" % (case.name, os.path.basename(case.path), case.line)
+            + "\n".join(case.shell) + "\n")
+
+
+def run_shell(case, exe, keep=None):
+    """Run the '$' lines of a command-line case: (exit status, output); 124 and
+    'TIMEOUT' for a timeout."""
+    with tempfile.TemporaryDirectory(prefix="adv_") as work:
+        text = shell_text(case)
+        script = os.path.join(work, "case.sh")
+        with open(script, "w") as f:
+            f.write(text)
+        if keep:
+            os.makedirs(keep, exist_ok=True)
+            with open(os.path.join(keep, case.name + ".sh"), "w") as f:
+                f.write(text)
+        env = dict(os.environ, repo=ROOT, exe=exe, python=PYTHON, testdir=SETUPS)
+        p = subprocess.Popen(["bash", script], cwd=work, env=env, stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True, errors="replace",
+                             start_new_session=True)    # its own group: a timeout ends it all
+        try:
+            out, _ = p.communicate(timeout=case.timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.communicate()
+            return 124, "TIMEOUT after %d s" % case.timeout
+        return p.returncode, out
+
+
+def judge(case, label, rc, out, fails, shell=False):
+    """Check one run's exit status and output against the case; appends to fails and
+    returns the RESULT values (None when the run crashed, hung or failed)."""
+    if rc == 124 and out.startswith("TIMEOUT"):
+        fails.append("%s: hangs (timeout after %d s)" % (label, case.timeout))
+        return None
+    if crashed(rc, out):
+        fails.append("%s: crash (exit %d): %s" % (label, rc, error_line(out)))
+        return None
+    if shell and SHELL_CRASH_TEXT.search(out):
+        line = next(l for l in out.splitlines() if SHELL_CRASH_TEXT.search(l))
+        fails.append("%s: crash (exit %d, a traceback or shell error): %s" % (label, rc, line.strip()))
+        return None
+    if case.errors:
+        if rc == 0:
+            fails.append("%s: no error (exit 0), wanted '%s'" % (label, case.errors[0]))
+        for e in case.errors:
+            if rc != 0 and e not in out:
+                fails.append("%s: wanted '%s', got: %s" % (label, e, error_line(out)))
+    elif rc != 0:
+        fails.append("%s: failed (exit %d): %s" % (label, rc, error_line(out)))
+        return None
+    for t in case.outputs:
+        if t not in out:
+            fails.append("%s: output lacks '%s'" % (label, t))
+    for t in case.no_outputs:
+        if t in out:
+            fails.append("%s: output has '%s'" % (label, t))
+    if case.errors:
+        return None
+    vals = parse_results(out)
+    fails += check_values(case, vals, label)
+    return vals
+
+
 def run_case(case, exe, keep=None):
     """Returns (ok, list of failure texts)."""
     fails, runs = [], []
+    if case.shell:
+        rc, out = run_shell(case, exe, keep)
+        judge(case, "shell", rc, out, fails, shell=True)
+        return not fails, fails
     for np_, grid in case.configs():
         label = "np=%d%s" % (np_, " grid %s" % " ".join(grid) if grid else "")
         with tempfile.TemporaryDirectory(prefix="adv_") as work:
@@ -278,31 +380,8 @@ def run_case(case, exe, keep=None):
                                  % (label, case.prepare_np, rc, error_line(out)))
                     continue
             rc, out = run_script.run(run_exe, np_, script, work, case.timeout, SETUPS)
-        timed_out = rc == 124 and out.startswith("TIMEOUT")
-        if timed_out:
-            fails.append("%s: hangs (timeout after %d s)" % (label, case.timeout))
-            continue
-        if crashed(rc, out):
-            fails.append("%s: crash (exit %d): %s" % (label, rc, error_line(out)))
-            continue
-        if case.errors:
-            if rc == 0:
-                fails.append("%s: no error (exit 0), wanted '%s'" % (label, case.errors[0]))
-            for e in case.errors:
-                if rc != 0 and e not in out:
-                    fails.append("%s: wanted '%s', got: %s" % (label, e, error_line(out)))
-        elif rc != 0:
-            fails.append("%s: failed (exit %d): %s" % (label, rc, error_line(out)))
-            continue
-        for t in case.outputs:
-            if t not in out:
-                fails.append("%s: output lacks '%s'" % (label, t))
-        for t in case.no_outputs:
-            if t in out:
-                fails.append("%s: output has '%s'" % (label, t))
-        if not case.errors:
-            vals = parse_results(out)
-            fails += check_values(case, vals, label)
+        vals = judge(case, label, rc, out, fails)
+        if vals is not None:
             runs.append((label, vals))
     if case.same and len(runs) == len(case.configs()):
         rtol, atol = case.same
@@ -349,8 +428,8 @@ def main():
             if a.verbose:
                 for c in cases:
                     if os.path.basename(c.path) == f:
-                        cfg = ", ".join("%d%s" % (n_, " grid " + " ".join(g) if g else "")
-                                        for n_, g in c.configs())
+                        cfg = "shell" if c.shell else ", ".join(
+                            "%d%s" % (n_, " grid " + " ".join(g) if g else "") for n_, g in c.configs())
                         print("    %-36s [%s] %s" % (c.name, cfg, "; ".join(c.notes)))
         print("-" * 37)
         for k in sorted(per_class):
