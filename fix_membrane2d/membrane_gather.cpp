@@ -297,7 +297,10 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
       if (e.chain_position[side] >= 0) {
         sides[side].chain_disks[e.chain_position[side]] = d;
         sides[side].chain_types[e.chain_position[side]] = static_cast<int>(rec[W_TYPE]);
-        if (rec[W_STEP] > out.chain_step) {
+        // ties: the lower ID (the records come in the ranks' order)
+        if (rec[W_STEP] > out.chain_step ||
+            (rec[W_STEP] == out.chain_step && out.chain_step_tag >= 0 &&
+             tag < out.chain_step_tag)) {
           out.chain_step = rec[W_STEP];
           out.chain_step_tag = tag;
         }

@@ -60,7 +60,7 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   struct Watched {
     double band_displacement = 0.0; // largest of a band disk since the detection (every auto)
     double chain_step = 0.0;        // largest |v| dt / r of a chain disk this step
-    long chain_step_tag = -1;
+    long chain_step_tag = -1;       // its ID (of tied disks the lowest)
   };
   // Positions, types and step fractions of the disks of `list` now; stops the
   // run when one of them is lost or not finite.

@@ -28,9 +28,13 @@ bool accept_chain(SideChain &s, const std::vector<Disk> &band, const ChainResult
   s.forgotten_escaped.clear();
   s.chain_tags.clear();
   for (int idx : r.chain) s.chain_tags.push_back(band[idx].tag);
+  // by tag, not in r.escaped's (the band's, the ranks') order
+  std::vector<int> escaped = r.escaped;
+  std::sort(escaped.begin(), escaped.end(),
+            [&band](int a, int b) { return band[a].tag < band[b].tag; });
   s.escaped_tags.clear();
   s.escaped_radius.clear();
-  for (int idx : r.escaped) {
+  for (int idx : escaped) {
     s.escaped_tags.push_back(band[idx].tag);
     s.escaped_radius.push_back(band[idx].r);
   }
@@ -40,6 +44,8 @@ bool accept_chain(SideChain &s, const std::vector<Disk> &band, const ChainResult
     s.watch_band = band;
     s.now = band;
   }
+  // escapees compared as sets: a restart file of an earlier version holds them in band order
+  std::sort(old_escaped.begin(), old_escaped.end());
   return s.chain_tags != old_tags || s.escaped_tags != old_escaped;
 }
 

@@ -41,7 +41,7 @@ struct SideChain {
   Side side = Side::Right;
   bool active = false;
   std::vector<long> chain_tags; // bottom -> top
-  std::vector<long> escaped_tags;
+  std::vector<long> escaped_tags; // ascending (a set: the band's order is the ranks')
   std::vector<double> escaped_radius;
   // the chain of the last run when it could not be kept: only to count
   // whether the next detection changes it
@@ -63,7 +63,10 @@ void forget_chain(SideChain &s);
 
 // Takes the successful search `r` on `band` as the side's chain; with
 // `watch` (every auto) records what the search depended on. Returns true
-// when the chain or its escapees differ from the previous (or forgotten) ones.
+// when the chain or the set of its escapees differ from the previous (or
+// forgotten) ones. The escapees are kept by ascending tag: the band's order
+// (and so r.escaped's) is the order the ranks gathered it in, which changes
+// with the decomposition and whenever a disk moves to another rank.
 bool accept_chain(SideChain &s, const std::vector<Disk> &band, const ChainResult &r,
                   const WatchSettings *watch);
 

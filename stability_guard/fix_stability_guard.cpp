@@ -269,7 +269,7 @@ double FixStabilityGuard::check_atoms()
 {
   const stability::AtomScan scan =
       stability::scan_atoms(static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f,
-                            atom->radius, atom->mask, groupbit, update->dt);
+                            atom->radius, atom->mask, groupbit, update->dt, atom->tag);
   const double dt_ratio = values[TIME_STEP_RATIO];
 
   long nonfinite = scan.nonfinite;
@@ -323,16 +323,18 @@ double FixStabilityGuard::check_overlaps()
   stability::OverlapScan scan;
   if (const NeighList *list = force->pair ? force->pair->list : nullptr)
     scan = stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
-                                    NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit);
+                                    NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit,
+                                    atom->tag);
+  // the pair's lower ID (i); of tied pairs the lowest IDs, on any rank
   const ValueTag local{scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0};
   const ValueTag worst = max_over_ranks(local, world);
   if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
 
-  // the partner lives on the rank that found the maximum (lowest such rank)
-  int partner = scan.j >= 0 ? atom->tag[scan.j] : 0;
-  int me_has = local.value == worst.value && local.tag == worst.tag ? comm->me : comm->nprocs;
-  MPI_Allreduce(MPI_IN_PLACE, &me_has, 1, MPI_INT, MPI_MIN, world);
-  MPI_Bcast(&partner, 1, MPI_INT, me_has, world);
+  // its partner: the lowest over the ranks that found that maximum and that atom
+  int partner = local.value == worst.value && local.tag == worst.tag && scan.j >= 0
+                    ? atom->tag[scan.j]
+                    : INT_MAX;
+  MPI_Allreduce(MPI_IN_PLACE, &partner, 1, MPI_INT, MPI_MIN, world);
   warned_overlap = true;
   warn(stability::overlap_warning(worst.tag, partner, worst.value, update->ntimestep, overlap_limit,
                                   OVERLAP + 1));

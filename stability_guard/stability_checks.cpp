@@ -51,17 +51,21 @@ bool finite3(const double *a)
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
                     const double *const *f, const double *radius, const int *mask, int groupbit,
-                    double dt)
+                    double dt, const int *tag)
 {
+  // of two atoms, whether atom a is named before atom b
+  auto before = [tag](std::size_t a, long b) { return tag && tag[a] < tag[b]; };
   AtomScan s;
   for (std::size_t i = 0; i < n; i++) {
     if (!(mask[i] & groupbit)) continue;
     if (!finite3(x[i]) || !finite3(v[i]) || !finite3(f[i])) {
-      if (s.nonfinite++ == 0) s.first_nonfinite = static_cast<long>(i);
+      if (s.nonfinite++ == 0 || before(i, s.first_nonfinite))
+        s.first_nonfinite = static_cast<long>(i);
       continue;
     }
     const double frac = step_fraction(v[i][0], v[i][1], v[i][2], dt, radius[i]);
-    if (s.argmax_step < 0 || frac > s.max_step_fraction) {
+    if (s.argmax_step < 0 || frac > s.max_step_fraction ||
+        (frac == s.max_step_fraction && before(i, s.argmax_step))) {
       s.max_step_fraction = frac;
       s.argmax_step = static_cast<long>(i);
     }
@@ -77,7 +81,8 @@ StepVerdict judge_step_fraction(double fraction, double limit)
 
 OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
                           const int *const *firstneigh, int neighmask, const double *const *x,
-                          const double *radius, const int *mask, int groupbit)
+                          const double *radius, const int *mask, int groupbit,
+                          const int *tag)
 {
   OverlapScan s;
   for (int ii = 0; ii < inum; ii++) {
@@ -89,7 +94,15 @@ OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
       const double frac =
           overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2], radius[i],
                            radius[j]);
-      if (frac > s.max_fraction) s = {frac, i, j};
+      if (!tag) {
+        if (frac > s.max_fraction) s = {frac, i, j};
+        continue;
+      }
+      const long lo = tag[j] < tag[i] ? j : i, hi = lo == i ? j : i;
+      if (frac > s.max_fraction ||
+          (frac == s.max_fraction && s.i >= 0 &&
+           (tag[lo] < tag[s.i] || (tag[lo] == tag[s.i] && tag[hi] < tag[s.j]))))
+        s = {frac, lo, hi};
     }
   }
   return s;

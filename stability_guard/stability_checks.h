@@ -50,7 +50,11 @@ double overlap_fraction(double dx, double dy, double dz, double ri, double rj);
 // One pass over the owned atoms of a group: the first non-finite position,
 // velocity or force, and the particle that moves the largest fraction of its radius
 // per step. Arrays as LIGGGHTS keeps them (x[i][0..2] etc.); `in_group` masks
-// the atoms to look at (mask[i] & groupbit).
+// the atoms to look at (mask[i] & groupbit). With `tag` (atom IDs) the atom
+// named is the lowest ID among the non-finite ones and among those tied for the
+// largest fraction, so that the rank's order of its atoms cannot change the
+// message (MPI_MAXLOC / MIN over the ranks then also pick the lowest ID);
+// without it, the lowest index.
 struct AtomScan {
   long nonfinite = 0;           // atoms with a non-finite x, v or f
   long first_nonfinite = -1;    // index of the first of them, -1 if none
@@ -60,7 +64,7 @@ struct AtomScan {
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
                     const double *const *f, const double *radius, const int *mask, int groupbit,
-                    double dt);
+                    double dt, const int *tag = nullptr);
 
 // What the largest |v| dt / r of a check means against the 'move' limit: within
 // it; above it but below STEP_FRACTION_BLOWN_UP (a strict limit stops a run
@@ -71,15 +75,19 @@ StepVerdict judge_step_fraction(double fraction, double limit);
 // The largest particle-particle overlap (overlap_fraction) over a neighbour list as
 // LIGGGHTS keeps it: ilist[0..inum), numneigh[i], firstneigh[i][..] (& neighmask
 // gives the index), both atoms of a pair in the group. Touching pairs only: 0
-// and no pair when no two particles of the group overlap.
+// and no pair when no two particles of the group overlap. With `tag` (atom
+// IDs) i is the pair's lower ID and, of pairs tied for the largest overlap,
+// the one with the lowest IDs (i, then j) is taken: not the first in the
+// list's order, which depends on the ranks.
 struct OverlapScan {
   double max_fraction = 0;
-  long i = -1, j = -1; // the pair (i from ilist), -1 if none
+  long i = -1, j = -1; // the pair (without tag: i from ilist), -1 if none
 };
 
 OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
                           const int *const *firstneigh, int neighmask, const double *const *x,
-                          const double *radius, const int *mask, int groupbit);
+                          const double *radius, const int *mask, int groupbit,
+                          const int *tag = nullptr);
 
 // Whether a measure that is warned about once is to be warned about now: it
 // exceeds its limit and has not been warned about before.

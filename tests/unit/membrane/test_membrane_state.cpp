@@ -40,6 +40,55 @@ TEST(MembraneState, AcceptChainTakesTagsAndCountsChanges)
   EXPECT_TRUE(accept_chain(s, band, r, nullptr)); // an escapee less
 }
 
+// The band comes in the order the ranks gathered it (rank 0's disks first,
+// each rank's in its own order): the same disks in another order, as after a
+// disk moved to another rank, are the same chain and the same escapees.
+TEST(MembraneState, EscapeesInAnotherBandOrderAreNoChange)
+{
+  SideChain s;
+  std::vector<Disk> band = column();
+  band[3].r = 0.25; // tag 13: a radius to follow
+  ChainResult r;
+  r.ok = true;
+  r.chain = {0, 1, 2};
+  r.escaped = {3, 4}; // tags 13, 14
+  EXPECT_TRUE(accept_chain(s, band, r, nullptr));
+  EXPECT_EQ(s.escaped_tags, (std::vector<long>{13, 14}));
+  // rank 1's disks first: tags 14, 13, 10, 11, 12
+  const std::vector<Disk> moved = {band[4], band[3], band[0], band[1], band[2]};
+  ChainResult q;
+  q.ok = true;
+  q.chain = {2, 3, 4};  // tags 10, 11, 12
+  q.escaped = {0, 1};   // ascending indices: tags 14, 13
+  EXPECT_FALSE(accept_chain(s, moved, q, nullptr));
+  EXPECT_EQ(s.chain_tags, (std::vector<long>{10, 11, 12}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<long>{13, 14}));     // by tag
+  EXPECT_EQ(s.escaped_radius, (std::vector<double>{0.25, 0.5})); // each with its disk's
+  // and back: still no change
+  EXPECT_FALSE(accept_chain(s, band, r, nullptr));
+  // a different set is a change whatever the order
+  q.escaped = {0};
+  EXPECT_TRUE(accept_chain(s, moved, q, nullptr));
+  EXPECT_EQ(s.escaped_tags, (std::vector<long>{14}));
+}
+
+// A restart file written before the escapees were kept by tag holds them in
+// band order: the same set found again is no change either.
+TEST(MembraneState, UnsortedEscapeesFromARestartAreComparedAsASet)
+{
+  SideChain s;
+  const std::vector<Disk> band = column();
+  s.chain_tags = {10, 11, 12};
+  s.escaped_tags = {14, 13};
+  s.escaped_radius = {0.5, 0.5};
+  ChainResult r;
+  r.ok = true;
+  r.chain = {0, 1, 2};
+  r.escaped = {3, 4};
+  EXPECT_FALSE(accept_chain(s, band, r, nullptr));
+  EXPECT_EQ(s.escaped_tags, (std::vector<long>{13, 14}));
+}
+
 TEST(MembraneState, ForgottenChainIsComparedWithTheNextOne)
 {
   SideChain s;

@@ -70,9 +70,9 @@ struct Atoms {
   std::vector<double *> x, v, f;
   std::vector<double> r;
   std::vector<int> mask;
-  AtomScan scan(double dt) const
+  AtomScan scan(double dt, const int *tag = nullptr) const
   {
-    return scan_atoms(r.size(), x.data(), v.data(), f.data(), r.data(), mask.data(), 1, dt);
+    return scan_atoms(r.size(), x.data(), v.data(), f.data(), r.data(), mask.data(), 1, dt, tag);
   }
 };
 
@@ -119,6 +119,33 @@ TEST(ScanAtoms, NonFiniteValuesAreCountedNotMeasured)
   EXPECT_NEAR(s.max_step_fraction, 0.005, 1e-15);
 }
 
+// A rank holds its atoms in an order of its own: of atoms tied for the
+// largest step, and of the non-finite ones, the lowest ID is named (as
+// MPI_MAXLOC and MIN do over the ranks), not the first in the rank's order.
+TEST(ScanAtoms, TiesNameTheLowestId)
+{
+  Atoms a(4);
+  const int tag[4] = {7, 3, 5, 2};
+  a.vs[0] = {1.0, 0.0, 0.0};  // 0.01, ID 7
+  a.vs[1] = {0.0, -1.0, 0.0}; // 0.01, ID 3
+  a.vs[2] = {0.5, 0.0, 0.0};  // 0.005
+  a.xs[3][0] = std::numeric_limits<double>::quiet_NaN(); // ID 2: not measured
+  AtomScan s = a.scan(1e-5, tag);
+  EXPECT_EQ(s.argmax_step, 1);
+  EXPECT_EQ(s.max_step_fraction, 0.01);
+  EXPECT_EQ(s.first_nonfinite, 3);
+  EXPECT_EQ(a.scan(1e-5).argmax_step, 0); // without IDs: the first index
+  // non-finite atoms with IDs 7 (index 0) and 5 (index 2): ID 5
+  a.xs[3][0] = 0.0;
+  a.fs[0][1] = std::numeric_limits<double>::infinity();
+  a.vs[2][2] = std::numeric_limits<double>::quiet_NaN();
+  s = a.scan(1e-5, tag);
+  EXPECT_EQ(s.nonfinite, 2);
+  EXPECT_EQ(s.first_nonfinite, 2);
+  EXPECT_EQ(s.argmax_step, 1);
+  EXPECT_EQ(a.scan(1e-5).first_nonfinite, 0);
+}
+
 TEST(ScanAtoms, EmptyGroup)
 {
   Atoms a(2);
@@ -163,10 +190,10 @@ struct Contacts {
   std::vector<std::vector<int>> lists;
   std::vector<int> mask, ilist, numneigh;
   std::vector<int *> first;
-  OverlapScan scan(int neighmask = ~0) const
+  OverlapScan scan(int neighmask = ~0, const int *tag = nullptr) const
   {
     return scan_overlaps(static_cast<int>(ilist.size()), ilist.data(), numneigh.data(),
-                         first.data(), neighmask, x.data(), r.data(), mask.data(), 1);
+                         first.data(), neighmask, x.data(), r.data(), mask.data(), 1, tag);
   }
 };
 
@@ -186,6 +213,49 @@ TEST(ScanOverlaps, LargestOverlapOfTheGroup)
   s = c.scan();
   EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
   EXPECT_EQ(s.i, 0);
+  EXPECT_EQ(s.j, 1);
+}
+
+// Two pairs mirrored about x = 0 overlap by exactly the same fraction: with
+// IDs the pair of the lowest IDs is named, lower ID first, whatever the
+// order of the list (each rank has its own).
+TEST(ScanOverlaps, TiedPairsNameTheLowestIds)
+{
+  const int tag[4] = {9, 4, 6, 5};
+  Contacts c({{-5e-3, 0, 0}, {-3.1e-3, 0, 0}, {3.1e-3, 0, 0}, {5e-3, 0, 0}},
+             {1e-3, 1e-3, 1e-3, 1e-3}, {{1}, {}, {3}, {}});
+  OverlapScan s = c.scan(~0, tag);
+  EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
+  EXPECT_EQ(s.i, 1); // ID 4
+  EXPECT_EQ(s.j, 0); // ID 9
+  // the same pairs listed the other way round (3 -> 2 first, then 1 -> 0)
+  c.lists = {{}, {0}, {}, {2}};
+  c.ilist = {3, 2, 1, 0};
+  for (std::size_t i = 0; i < c.lists.size(); i++) {
+    c.numneigh[i] = static_cast<int>(c.lists[i].size());
+    c.first[i] = c.lists[i].data();
+  }
+  s = c.scan(~0, tag);
+  EXPECT_EQ(s.i, 1);
+  EXPECT_EQ(s.j, 0);
+  // without IDs: the first pair of the list
+  s = c.scan();
+  EXPECT_EQ(s.i, 3);
+  EXPECT_EQ(s.j, 2);
+}
+
+// One disk overlapping two others by the same fraction (mirrored about it):
+// the partner with the lower ID.
+TEST(ScanOverlaps, TiedPartnersNameTheLowerId)
+{
+  const int tag[3] = {4, 9, 6};
+  const Contacts c({{0, 0, 0}, {-1.9e-3, 0, 0}, {1.9e-3, 0, 0}}, {1e-3, 1e-3, 1e-3},
+                   {{1, 2}, {}, {}});
+  OverlapScan s = c.scan(~0, tag);
+  EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
+  EXPECT_EQ(s.i, 0);
+  EXPECT_EQ(s.j, 2); // ID 6, not 9 (the first in the list)
+  s = c.scan();
   EXPECT_EQ(s.j, 1);
 }
 
