@@ -36,6 +36,7 @@
 
 #include "stability_messages.h"
 #include "stability_checks.h"
+#include "rank_choice.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -94,19 +95,6 @@ const std::string ILIMIT_USAGE =
 const std::string INERTIAL_USAGE =
     "inertial R P, the strain rate R >= 0 (1/time; use abs() for a signed rate) and the "
     "pressure P > 0 (force/area), each a number or v_name of an equal-style variable";
-
-// a value and the atom ID it belongs to, for MPI_MAXLOC over the ranks
-struct ValueTag {
-  double value;
-  int tag;
-};
-
-ValueTag max_over_ranks(ValueTag local, MPI_Comm world)
-{
-  ValueTag global;
-  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  return global;
-}
 
 } // namespace
 
@@ -201,20 +189,20 @@ void FixStabilityGuard::init()
 void FixStabilityGuard::setup(int)
 {
   natoms0 = count_group_atoms();
-  run_checks(false);
+  run_checks(false, true);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::end_of_step()
 {
-  run_checks(check_inertial);
+  run_checks(check_inertial, false);
 }
 
-// the checks of the setup and of every N steps; their measures are the output
-void FixStabilityGuard::run_checks(bool inertial)
+// the checks of the setup (at_start) and of every N steps; their measures are the output
+void FixStabilityGuard::run_checks(bool inertial, bool at_start)
 {
-  values[STEP_FRACTION] = check_atoms();
+  values[STEP_FRACTION] = check_atoms(at_start);
   values[LOST] = static_cast<double>(check_lost_atoms());
   values[OVERLAP] = check_overlaps();
   if (inertial) values[INERTIAL] = check_inertial_number();
@@ -265,22 +253,37 @@ void FixStabilityGuard::restart(char *raw)
    Returns the largest |v| dt / r.
 ------------------------------------------------------------------------- */
 
-double FixStabilityGuard::check_atoms()
+double FixStabilityGuard::check_atoms(bool at_start)
 {
-  const stability::AtomScan scan =
-      stability::scan_atoms(static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f,
-                            atom->radius, atom->mask, groupbit, update->dt);
+  const stability::AtomScan scan = stability::scan_atoms(
+      static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f, atom->radius, atom->mask,
+      groupbit, update->dt, atom->rmass_flag ? atom->rmass : nullptr, atom->tag);
   const double dt_ratio = values[TIME_STEP_RATIO];
 
+  // a radius or mass that is not a positive number: the input's fault, named first
+  long bad_size = scan.bad_size;
+  MPI_Allreduce(MPI_IN_PLACE, &bad_size, 1, MPI_LONG, MPI_SUM, world);
+  const int ib = static_cast<int>(scan.first_bad_size);
+  if (bad_size > 0) {
+    double size[2] = {ib >= 0 ? atom->radius[ib] : 0.0,
+                      ib >= 0 && atom->rmass_flag ? atom->rmass[ib] : 0.0};
+    const int first = stability::name_first(world, ib >= 0 ? atom->tag[ib] : LLONG_MAX, size, 2);
+    fail(msg(stability::size_error(bad_size, update->ntimestep, first, size[0], size[1],
+                                   atom->rmass_flag)));
+  }
   long nonfinite = scan.nonfinite;
   MPI_Allreduce(MPI_IN_PLACE, &nonfinite, 1, MPI_LONG, MPI_SUM, world);
-  if (nonfinite > 0) {
-    int first = scan.first_nonfinite >= 0 ? atom->tag[scan.first_nonfinite] : INT_MAX;
-    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, world);
-    fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio)));
+  const int in = static_cast<int>(scan.first_nonfinite);
+  if (nonfinite > 0) { // a non-finite position or velocity on any rank before a force
+    const bool force_only = scan.first_kind == stability::NonFinite::Force;
+    double kind = static_cast<double>(scan.first_kind);
+    const int first = stability::name_first(
+        world, in >= 0 ? (force_only ? 1LL << 32 : 0LL) + atom->tag[in] : LLONG_MAX, &kind, 1);
+    fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio,
+                                        static_cast<stability::NonFinite>(static_cast<int>(kind)),
+                                        at_start)));
   }
-
-  const ValueTag fastest = max_over_ranks(
+  const stability::ValueTag fastest = stability::max_over_ranks(
       {scan.max_step_fraction, scan.argmax_step >= 0 ? atom->tag[scan.argmax_step] : 0}, world);
   const stability::StepVerdict verdict = stability::judge_step_fraction(fastest.value, move_limit);
   if (verdict != stability::StepVerdict::Within)
@@ -324,8 +327,8 @@ double FixStabilityGuard::check_overlaps()
   if (const NeighList *list = force->pair ? force->pair->list : nullptr)
     scan = stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
                                     NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit);
-  const ValueTag local{scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0};
-  const ValueTag worst = max_over_ranks(local, world);
+  const stability::ValueTag local{scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0};
+  const stability::ValueTag worst = stability::max_over_ranks(local, world);
   if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
 
   // the partner lives on the rank that found the maximum (lowest such rank)

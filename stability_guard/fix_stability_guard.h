@@ -62,8 +62,9 @@ class FixStabilityGuard : public Fix {
   int warnings;
 
   // each check returns its measure; the ones that stop the run raise the error
-  void run_checks(bool inertial);
-  double check_atoms();
+  // at_start: the checks of the setup of a run (what they find, the input gave)
+  void run_checks(bool inertial, bool at_start);
+  double check_atoms(bool at_start);
   bigint check_lost_atoms();
   double check_overlaps();
   double check_inertial_number();

@@ -47,20 +47,31 @@ double step_fraction(double vx, double vy, double vz, double dt, double radius);
 // / min(ri, rj); negative when they do not touch.
 double overlap_fraction(double dx, double dy, double dz, double ri, double rj);
 
-// One pass over the owned atoms of a group: the first non-finite position,
-// velocity or force, and the particle that moves the largest fraction of its radius
-// per step. Arrays as LIGGGHTS keeps them (x[i][0..2] etc.); `in_group` masks
-// the atoms to look at (mask[i] & groupbit).
+// One pass over the owned atoms of a group: the atoms whose radius (or mass) is
+// not a finite number > 0 (a fault of the input: |v| dt / r means nothing for
+// them), the atoms with a non-finite position, velocity or force, and the
+// particle that moves the largest fraction of its radius per step. Arrays as
+// LIGGGHTS keeps them (x[i][0..2] etc.); `in_group` masks the atoms to look at
+// (mask[i] & groupbit); rmass may be null (no per-atom mass to check). The atom
+// each count names is the one with the smallest tag (tag null: index), so that
+// it does not depend on how the atoms are spread over ranks; of the non-finite
+// ones an atom whose position or velocity is not finite is named before one
+// whose force only is (a non-finite velocity makes the contact forces of its
+// neighbours non-finite too: the cause is named, not its neighbours).
+enum class NonFinite { None, Position, Velocity, Force };
 struct AtomScan {
-  long nonfinite = 0;           // atoms with a non-finite x, v or f
-  long first_nonfinite = -1;    // index of the first of them, -1 if none
-  double max_step_fraction = 0; // max |v| dt / r over finite atoms
-  long argmax_step = -1;        // its index, -1 if no atom
+  long nonfinite = 0;                     // atoms with a non-finite x, v or f
+  long first_nonfinite = -1;              // index of the one to name (see above), -1 if none
+  NonFinite first_kind = NonFinite::None; // what of it is not finite (x before v before f)
+  long bad_size = 0;                      // atoms whose radius or mass is not finite and > 0
+  long first_bad_size = -1;               // index of the one to name, -1 if none
+  double max_step_fraction = 0;           // max |v| dt / r over finite atoms of a valid size
+  long argmax_step = -1;                  // its index, -1 if no atom
 };
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
                     const double *const *f, const double *radius, const int *mask, int groupbit,
-                    double dt);
+                    double dt, const double *rmass = nullptr, const int *tag = nullptr);
 
 // What the largest |v| dt / r of a check means against the 'move' limit: within
 // it; above it but below STEP_FRACTION_BLOWN_UP (a strict limit stops a run

@@ -119,6 +119,61 @@ TEST(ScanAtoms, NonFiniteValuesAreCountedNotMeasured)
   EXPECT_NEAR(s.max_step_fraction, 0.005, 1e-15);
 }
 
+TEST(ScanAtoms, NamesTheCauseByTagNotItsNeighbours)
+{
+  // a NaN velocity (tag 9) gives its neighbours (tags 2 and 30) NaN contact forces:
+  // the velocity is named, whatever the order of the atoms on the rank
+  Atoms a(3);
+  const int tags[3] = {30, 9, 2};
+  a.fs[0][0] = std::numeric_limits<double>::quiet_NaN();
+  a.vs[1][2] = std::numeric_limits<double>::quiet_NaN();
+  a.fs[2][1] = std::numeric_limits<double>::quiet_NaN();
+  AtomScan s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5,
+                          nullptr, tags);
+  EXPECT_EQ(s.nonfinite, 3);
+  EXPECT_EQ(s.first_nonfinite, 1);
+  EXPECT_EQ(s.first_kind, NonFinite::Velocity);
+  // forces only: the smallest tag, not the first index
+  a.vs[1][2] = 0.0;
+  a.fs[1][2] = std::numeric_limits<double>::infinity();
+  s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5, nullptr,
+                 tags);
+  EXPECT_EQ(s.first_nonfinite, 2);
+  EXPECT_EQ(s.first_kind, NonFinite::Force);
+  // a position is named as such, before the velocity of the same atom
+  a.xs[0][1] = std::numeric_limits<double>::infinity();
+  a.vs[0][1] = std::numeric_limits<double>::quiet_NaN();
+  s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5, nullptr,
+                 tags);
+  EXPECT_EQ(s.first_nonfinite, 0);
+  EXPECT_EQ(s.first_kind, NonFinite::Position);
+}
+
+TEST(ScanAtoms, RadiusOrMassThatIsNotPositiveIsAnInputFault)
+{
+  // a zero radius would make |v| dt / r infinite (a moving sphere) or NaN (at
+  // rest): counted apart and left out of the largest step fraction
+  Atoms a(4);
+  const int tags[4] = {4, 3, 2, 1};
+  std::vector<double> mass(4, 1e-6);
+  a.vs[0] = {1.0, 0.0, 0.0}; // 0.01
+  a.r[1] = 0.0;
+  a.vs[1] = {0.0, 0.0, 1.0};
+  mass[2] = 0.0; // density 0
+  a.r[3] = std::numeric_limits<double>::quiet_NaN();
+  a.mask[3] = 0; // outside the group: ignored
+  AtomScan s = scan_atoms(4, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5,
+                          mass.data(), tags);
+  EXPECT_EQ(s.bad_size, 2);
+  EXPECT_EQ(s.first_bad_size, 2); // tag 2 < tag 3
+  EXPECT_EQ(s.argmax_step, 0);
+  EXPECT_NEAR(s.max_step_fraction, 0.01, 1e-15);
+  // without per-atom masses only the radius is checked
+  s = scan_atoms(4, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5);
+  EXPECT_EQ(s.bad_size, 1);
+  EXPECT_EQ(s.first_bad_size, 1);
+}
+
 TEST(ScanAtoms, EmptyGroup)
 {
   Atoms a(2);
