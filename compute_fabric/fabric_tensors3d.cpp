@@ -135,7 +135,7 @@ void ForceSums3::add(const Contact3 &c, const Eigen::Matrix3d &fabric)
   if (!has_normal(c)) return;
   sum[WITH_NORMAL].add(1.0);
   const double w = 1.0 + c.n.dot(fabric * c.n);
-  if (!(w > 0.0)) {
+  if (!model_density_usable(w)) { // w <= 0 up to round-off
     sum[SKIPPED].add(1.0);
     return;
   }

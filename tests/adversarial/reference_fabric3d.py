@@ -18,8 +18,9 @@ def lattice(nx, ny, nz, a):
                     dtype=float)
 
 
-def outputs(x, r, volume=None, ids=None):
-    """Every value of fabric3d_print.inc for spheres at x with radii r (IDs 1..N in order)."""
+def outputs(x, r, volume=None, ids=None, period_x=None):
+    """Every value of fabric3d_print.inc for spheres at x with radii r (IDs 1..N in order);
+    period_x: the box length of a periodic x (minimum image)."""
     n = len(x)
     ids = np.arange(1, n + 1) if ids is None else np.asarray(ids)
     normals, fns, branches, counts = [], [], [], np.zeros(n)
@@ -28,6 +29,8 @@ def outputs(x, r, volume=None, ids=None):
         for j in range(i + 1, n):
             a, b = (i, j) if ids[i] < ids[j] else (j, i)
             l = x[b] - x[a]
+            if period_x:
+                l[0] -= period_x * round(l[0] / period_x)
             dist = np.linalg.norm(l)
             overlap = r[a] + r[b] - dist
             if overlap <= 0:
@@ -56,7 +59,7 @@ def outputs(x, r, volume=None, ids=None):
         dev = lambda t: t - np.trace(t) / 3 * np.eye(3)
         a = 7.5 * dev(phi)
         w = 1 + np.einsum("ci,ij,cj->c", N, a, N)
-        ok = w > 0
+        ok = w > 1e-12  # w = 0 in exact arithmetic is ~2e-16 here: outside the model
         out["skipped"] = int(np.sum(~ok))
         chi = (N[ok].T * (fn[ok] / w[ok])) @ N[ok] / len(N)
         f0 = np.trace(chi)
@@ -84,6 +87,11 @@ def cases():
     c["layer"] = (x, r3(9), 9e-9)
     x = lattice(3, 3, 2, 0.001)
     c["cube_top_deleted"] = (x, r3(18), 1.8e-8)
+    # a column of 5 along z and a sphere beside its lowest: a_xx = -1, w = 0 for that contact
+    x = np.vstack([lattice(1, 1, 5, 0.001), [(0.001, 0, 0)]])
+    c["column_side"] = (x, r3(6), 6e-9)
+    # the cube in a box periodic in x of length 3 mm: a ring of contacts along x
+    c["cube_periodic_x"] = (lattice(3, 3, 3, 0.001), r3(27), 2.7e-8, 0.003)
     # 1:20 grading: a 20 mm ball at the origin, six 1 mm spheres on its axes, 10 um overlap
     big = 0.01
     s = big + 0.0005 - 1e-5
@@ -101,6 +109,6 @@ if __name__ == "__main__":
     if len(sys.argv) != 2 or sys.argv[1] not in known:
         print("usage: reference_fabric3d.py CASE; CASE = " + ", ".join(known))
         sys.exit(0 if sys.argv[1:] == ["--list"] else 1)
-    x, r, vol = known[sys.argv[1]]
-    for k, v in outputs(x, r, vol).items():
+    x, r, vol, *period = known[sys.argv[1]]
+    for k, v in outputs(x, r, vol, period_x=period[0] if period else None).items():
         print("%-10s %.17g" % (k, v))

@@ -157,6 +157,24 @@ TEST(FabricTensors3d, SkipsContactsOutsideTheModel)
   EXPECT_NEAR(r.force.f0, 0.9 / (1.0 + 7.5 * (0.9 - 1.0 / 3.0)), 1e-14);
 }
 
+TEST(FabricTensors3d, DensityZeroUpToRoundOffIsOutsideTheModel)
+{
+  // four contacts along z, one along x: a_xx = 7.5 (1/5 - 1/3) = -1 exactly, w_x = 0,
+  // which comes out as +2.2e-16: weighted by 1/w it made f0 = 9e13 N. Skipped as w <= 0.
+  std::vector<Vector3d> axes(4, Vector3d(0, 0, 1));
+  axes.push_back(Vector3d(1, 0, 0));
+  const Fits r = fit(sampled(axes, 0.1, Matrix3d::Zero(), Matrix3d::Zero(), 1e-3));
+  EXPECT_NEAR(r.fabric.a(0, 0), -1.0, 1e-14);
+  EXPECT_EQ(r.force.skipped, 1);
+  // chi_n = (1/5) 4 x 0.1 zz / w_z, w_z = 1 + 7.5 (4/5 - 1/3) = 4.5: f0 = 0.08/4.5
+  EXPECT_NEAR(r.force.f0, 0.08 / 4.5, 1e-15);
+  // all the force along z: a_n = 15/2 dev(zz) = diag(-2.5, -2.5, 5)
+  EXPECT_NEAR(r.force.normal.a(2, 2), 5.0, 1e-12);
+  EXPECT_NEAR(r.force.normal.invariant, 7.5, 1e-12);
+  EXPECT_TRUE(fabric::model_density_usable(1e-9));
+  EXPECT_FALSE(fabric::model_density_usable(2.2e-16));
+}
+
 TEST(FabricTensors3d, LoveWeberStressByHand)
 {
   // a compressed pair along x (force 5 on b, branch 0.002) and a sphere on a wall
