@@ -175,6 +175,21 @@ TEST(FabricTensors3d, DensityZeroUpToRoundOffIsOutsideTheModel)
   EXPECT_FALSE(fabric::model_density_usable(2.2e-16));
 }
 
+TEST(FabricTensors3d, TensileMeanForceGivesNoForceAnisotropy)
+{
+  // one contact in tension along x (f_n = -0.1) and a weaker compressive one along z:
+  // f0 = tr chi_n = (-0.1/w_x + 0.05/w_z)/2 < 0: f0, a_n, a_t are 0 (as in 2D), not
+  // a_n scaled by a negative or vanishing f0
+  std::vector<Contact3> contacts = {
+      fabric::make_contact3(1, 2, Vector3d(1e-3, 0, 0), Vector3d(-0.1, 0, 0.02), 1e-3),
+      fabric::make_contact3(3, 4, Vector3d(0, 0, 1e-3), Vector3d(0, 0, 0.05), 1e-3)};
+  const Fits r = fit(contacts);
+  EXPECT_EQ(r.force.f0, 0.0);
+  EXPECT_EQ(r.force.normal.invariant, 0.0);
+  EXPECT_EQ(r.force.tangential.invariant, 0.0);
+  EXPECT_NEAR(r.fabric.invariant, 3.75, 1e-12); // the fabric is there
+}
+
 TEST(FabricTensors3d, LoveWeberStressByHand)
 {
   // a compressed pair along x (force 5 on b, branch 0.002) and a sphere on a wall
