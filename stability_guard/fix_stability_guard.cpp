@@ -188,6 +188,10 @@ void FixStabilityGuard::init()
 
 void FixStabilityGuard::setup(int)
 {
+  maxtag0 = 0; // the atoms of the run: those of the group now, tags up to the largest
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) maxtag0 = std::max(maxtag0, atom->tag[i]);
+  MPI_Allreduce(MPI_IN_PLACE, &maxtag0, 1, MPI_INT, MPI_MAX, world);
   natoms0 = count_group_atoms();
   run_checks(false, true);
 }
@@ -294,18 +298,20 @@ double FixStabilityGuard::check_atoms(bool at_start)
 
 /* ---------------------------------------------------------------------- */
 
+// atoms inserted during the run (fix insert/*: larger tags) are not counted
 bigint FixStabilityGuard::count_group_atoms()
 {
   bigint n = 0;
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) n++;
+    if ((atom->mask[i] & groupbit) && atom->tag[i] <= maxtag0) n++;
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   return n;
 }
 
 /* ----------------------------------------------------------------------
    with 'thermo_modify lost ignore' LIGGGHTS drops atoms that leave a
-   fixed boundary silently; a biaxial or triaxial sample must keep every particle
+   fixed boundary silently; a biaxial or triaxial sample must keep every particle.
+   Atoms inserted since the setup neither hide a loss nor count as negative ones
 ------------------------------------------------------------------------- */
 
 bigint FixStabilityGuard::check_lost_atoms()

@@ -56,6 +56,7 @@ class FixStabilityGuard : public Fix {
 
   double d50, density; // of the group, for the inertial number
   bigint natoms0;      // group atoms at setup
+  int maxtag0 = 0;     // their largest tag (later ones were inserted during the run)
   double values[VECTOR_SIZE];
   bool warned_overlap, warned_inertial;
   double warned_dt = 0.0; // the time step last warned about
