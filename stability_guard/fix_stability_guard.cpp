@@ -25,6 +25,7 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "pair.h"
 #include "update.h"
@@ -155,8 +156,6 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
   std::fill(values, values + VECTOR_SIZE, 0.0);
 }
 
-/* ---------------------------------------------------------------------- */
-
 int FixStabilityGuard::setmask()
 {
   return END_OF_STEP;
@@ -194,9 +193,9 @@ void FixStabilityGuard::setup(int)
   MPI_Allreduce(MPI_IN_PLACE, &maxtag0, 1, MPI_INT, MPI_MAX, world);
   natoms0 = count_group_atoms();
   run_checks(false, true);
+  // what a variable of 'inertial' reads (a per-atom virial, say) is needed at the first check
+  if (check_inertial) modify->addstep_compute_all((update->ntimestep / nevery + 1) * nevery);
 }
-
-/* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::end_of_step()
 {
@@ -338,13 +337,12 @@ double FixStabilityGuard::check_overlaps()
   if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
 
   // the partner lives on the rank that found the maximum (lowest such rank)
-  int partner = scan.j >= 0 ? atom->tag[scan.j] : 0;
-  int me_has = local.value == worst.value && local.tag == worst.tag ? comm->me : comm->nprocs;
-  MPI_Allreduce(MPI_IN_PLACE, &me_has, 1, MPI_INT, MPI_MIN, world);
-  MPI_Bcast(&partner, 1, MPI_INT, me_has, world);
+  double partner = scan.j >= 0 ? atom->tag[scan.j] : 0;
+  stability::name_first(world, local.value == worst.value && local.tag == worst.tag ? 0 : LLONG_MAX,
+                        &partner, 1);
   warned_overlap = true;
-  warn(stability::overlap_warning(worst.tag, partner, worst.value, update->ntimestep, overlap_limit,
-                                  OVERLAP + 1));
+  warn(stability::overlap_warning(worst.tag, static_cast<int>(partner), worst.value,
+                                  update->ntimestep, overlap_limit, OVERLAP + 1));
   return worst.value;
 }
 
@@ -357,6 +355,7 @@ double FixStabilityGuard::check_inertial_number()
 {
   const double rate = rate_in.evaluate(lmp);
   const double pressure = pressure_in.evaluate(lmp);
+  modify->addstep_compute(update->ntimestep + nevery); // and at the next check
   const stability::InertialCheck inertial =
       stability::check_inertial_number(rate, pressure, d50, density);
   if (inertial.status == stability::InertialStatus::BadRate)
