@@ -160,8 +160,9 @@ ForceAnisotropy3 force_anisotropy(const ForceSums3 &sums)
   const Eigen::Matrix3d chi_t = full_of(&sums.sum[ForceSums3::CHI_T]) / n;
   const double f0 = chi_n.trace();
   // no compressive mean force (no force, or tension: the viscous part of separating
-  // contacts): no force anisotropy to scale by it, and f0 = 0, as in 2D
-  if (!(f0 > 0.0)) return r;
+  // contacts): no force anisotropy to scale by it, and f0 = 0, as in 2D. A NaN (a
+  // contact force from a NaN velocity) is not hidden as 0: it goes on to the outputs
+  if (f0 <= 0.0) return r;
   r.f0 = f0;
   r.normal = anisotropy_of(7.5 * deviator(chi_n) / r.f0);
   r.tangential = anisotropy_of(2.5 * (chi_t + chi_t.transpose()) / r.f0);

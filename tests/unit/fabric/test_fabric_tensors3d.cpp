@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -188,6 +189,18 @@ TEST(FabricTensors3d, TensileMeanForceGivesNoForceAnisotropy)
   EXPECT_EQ(r.force.normal.invariant, 0.0);
   EXPECT_EQ(r.force.tangential.invariant, 0.0);
   EXPECT_NEAR(r.fabric.invariant, 3.75, 1e-12); // the fabric is there
+}
+
+TEST(FabricTensors3d, NonFiniteForceIsNotHiddenAsZero)
+{
+  // a NaN velocity gives its contacts NaN forces: f0 and a_n are NaN, not 0
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Contact3> contacts = {
+      fabric::make_contact3(1, 2, Vector3d(1e-3, 0, 0), Vector3d(nan, 0, 0), 1e-3),
+      fabric::make_contact3(3, 4, Vector3d(0, 0, 1e-3), Vector3d(0, 0, 0.05), 1e-3)};
+  const Fits r = fit(contacts);
+  EXPECT_TRUE(std::isnan(r.force.f0));
+  EXPECT_TRUE(std::isnan(r.force.normal.invariant));
 }
 
 TEST(FabricTensors3d, LoveWeberStressByHand)
