@@ -161,8 +161,6 @@ int FixStabilityGuard::setmask()
   return END_OF_STEP;
 }
 
-/* ---------------------------------------------------------------------- */
-
 void FixStabilityGuard::init()
 {
   if (check_inertial) {
@@ -330,18 +328,22 @@ double FixStabilityGuard::check_overlaps()
 {
   stability::OverlapScan scan;
   if (const NeighList *list = force->pair ? force->pair->list : nullptr)
-    scan = stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
-                                    NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit);
-  const stability::ValueTag local{scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0};
-  const stability::ValueTag worst = stability::max_over_ranks(local, world);
+    scan =
+        stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
+                                 NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit, atom->tag);
+  const stability::ValueTag worst =
+      stability::max_over_ranks({scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0}, world);
   if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
-
-  // the partner lives on the rank that found the maximum (lowest such rank)
-  double partner = scan.j >= 0 ? atom->tag[scan.j] : 0;
-  stability::name_first(world, local.value == worst.value && local.tag == worst.tag ? 0 : LLONG_MAX,
-                        &partner, 1);
+  // of the ranks with the largest overlap, the pair of the smallest tags
+  double pair[2] = {scan.i >= 0 ? 1.0 * atom->tag[scan.i] : 0,
+                    scan.j >= 0 ? 1.0 * atom->tag[scan.j] : 0};
+  const bool mine = scan.i >= 0 && scan.max_fraction == worst.value;
+  stability::name_first(
+      world,
+      mine ? stability::pair_key(static_cast<int>(pair[0]), static_cast<int>(pair[1])) : LLONG_MAX,
+      pair, 2);
   warned_overlap = true;
-  warn(stability::overlap_warning(worst.tag, static_cast<int>(partner), worst.value,
+  warn(stability::overlap_warning(static_cast<int>(pair[0]), static_cast<int>(pair[1]), worst.value,
                                   update->ntimestep, overlap_limit, OVERLAP + 1));
   return worst.value;
 }
@@ -388,8 +390,6 @@ void FixStabilityGuard::fail(const std::string &text)
   error->all(FLERR, text.c_str());
   std::abort(); // Error::all does not return; tells the compiler so
 }
-
-/* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::warn(const std::string &text)
 {

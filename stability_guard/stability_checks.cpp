@@ -99,9 +99,15 @@ StepVerdict judge_step_fraction(double fraction, double limit)
   return fraction > STEP_FRACTION_BLOWN_UP ? StepVerdict::BlownUp : StepVerdict::AboveLimit;
 }
 
+long long pair_key(int tag_a, int tag_b)
+{
+  const long long lo = tag_a < tag_b ? tag_a : tag_b, hi = tag_a < tag_b ? tag_b : tag_a;
+  return (lo << 32) | hi;
+}
+
 OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
                           const int *const *firstneigh, int neighmask, const double *const *x,
-                          const double *radius, const int *mask, int groupbit)
+                          const double *radius, const int *mask, int groupbit, const int *tag)
 {
   OverlapScan s;
   for (int ii = 0; ii < inum; ii++) {
@@ -112,7 +118,9 @@ OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
       if (!(mask[j] & groupbit)) continue;
       const double frac = overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2],
                                            radius[i], radius[j]);
-      if (frac > s.max_fraction) s = {frac, i, j};
+      const bool tie_before = tag && frac == s.max_fraction && s.i >= 0 &&
+                              pair_key(tag[i], tag[j]) < pair_key(tag[s.i], tag[s.j]);
+      if (frac > s.max_fraction || tie_before) s = {frac, i, j};
     }
   }
   return s;

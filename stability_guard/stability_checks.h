@@ -88,9 +88,16 @@ struct OverlapScan {
   long i = -1, j = -1; // the pair (i from ilist), -1 if none
 };
 
+// With `tag`, of equal overlaps the pair with the smaller (lower tag, higher tag)
+// is kept, so the pair named does not depend on the order of the lists (nor on the
+// ranks: see fix stability/guard); without, the first found.
 OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
                           const int *const *firstneigh, int neighmask, const double *const *x,
-                          const double *radius, const int *mask, int groupbit);
+                          const double *radius, const int *mask, int groupbit,
+                          const int *tag = nullptr);
+
+// The key of a pair of tags for choosing among equal overlaps: (lower << 32) | higher.
+long long pair_key(int tag_a, int tag_b);
 
 // Whether a measure that is warned about once is to be warned about now: it
 // exceeds its limit and has not been warned about before.

@@ -46,9 +46,8 @@ TEST(OverlapFraction, HandWorked)
   // radii 1 and 0.5 mm, centres 1.4 mm apart: overlap 0.1 mm / 0.5 mm = 0.2
   EXPECT_NEAR(overlap_fraction(1.4e-3, 0.0, 0.0, 1e-3, 0.5e-3), 0.2, 1e-12);
   // apart by 0.6 * sqrt(2)... along a diagonal: distance 1.6 mm -> gap 0.1 mm -> -0.2
-  EXPECT_NEAR(
-      overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 0.0, 1e-3, 0.5e-3), -0.2,
-      1e-12);
+  EXPECT_NEAR(overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 0.0, 1e-3, 0.5e-3),
+              -0.2, 1e-12);
   // in 3D along (2, 3, 6)/7: distance 1.4 mm -> overlap 0.1 mm -> 0.2
   EXPECT_NEAR(overlap_fraction(0.4e-3, 0.6e-3, 1.2e-3, 1e-3, 0.5e-3), 0.2, 1e-12);
 }
@@ -242,6 +241,24 @@ TEST(ScanOverlaps, LargestOverlapOfTheGroup)
   EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
   EXPECT_EQ(s.i, 0);
   EXPECT_EQ(s.j, 1);
+}
+
+TEST(ScanOverlaps, EqualOverlapsNameTheSmallestPairOfTags)
+{
+  // 1, 2 and 3 around 0 at 1.9 mm (x, y, -y): equal overlaps 0.1; tags 7, 9, 3, 1 give the
+  // pairs (7, 9), (3, 7), (1, 7): the smallest, (1, 7), whatever the list order
+  Contacts c({{0, 0, 0}, {1.9e-3, 0, 0}, {0, 1.9e-3, 0}, {0, -1.9e-3, 0}}, {1e-3, 1e-3, 1e-3, 1e-3},
+             {{1, 2, 3}, {}, {}, {}});
+  const int tags[4] = {7, 9, 3, 1};
+  const OverlapScan s =
+      scan_overlaps(static_cast<int>(c.ilist.size()), c.ilist.data(), c.numneigh.data(),
+                    c.first.data(), ~0, c.x.data(), c.r.data(), c.mask.data(), 1, tags);
+  EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
+  EXPECT_EQ(s.i, 0);
+  EXPECT_EQ(s.j, 3);
+  EXPECT_EQ(pair_key(7, 1), (1LL << 32) | 7);
+  // without tags: the first found
+  EXPECT_EQ(c.scan().j, 1);
 }
 
 TEST(ScanOverlaps, SpheresStackedAlongZ)
