@@ -85,7 +85,9 @@ AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *
     }
     if (!size_ok) continue;
     const double frac = step_fraction(v[i][0], v[i][1], v[i][2], dt, radius[i]);
-    if (s.argmax_step < 0 || frac > s.max_step_fraction) {
+    // of equal fractions the smaller tag: the atom named does not depend on the ranks
+    if (s.argmax_step < 0 || frac > s.max_step_fraction ||
+        (frac == s.max_step_fraction && before(i, s.argmax_step))) {
       s.max_step_fraction = frac;
       s.argmax_step = static_cast<long>(i);
     }

@@ -66,7 +66,7 @@ struct AtomScan {
   long bad_size = 0;                      // atoms whose radius or mass is not finite and > 0
   long first_bad_size = -1;               // index of the one to name, -1 if none
   double max_step_fraction = 0;           // max |v| dt / r over finite atoms of a valid size
-  long argmax_step = -1;                  // its index, -1 if no atom
+  long argmax_step = -1; // its index (of equal ones the smallest tag), -1 if no atom
 };
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,

@@ -148,6 +148,17 @@ TEST(ScanAtoms, NamesTheCauseByTagNotItsNeighbours)
   EXPECT_EQ(s.first_kind, NonFinite::Position);
 }
 
+TEST(ScanAtoms, EqualStepFractionsNameTheSmallestTag)
+{
+  Atoms a(3);
+  const int tags[3] = {8, 2, 5};
+  for (auto &v : a.vs) v = {0.0, 0.0, 3.0}; // all alike: 0.03
+  const AtomScan s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1,
+                                1e-5, nullptr, tags);
+  EXPECT_EQ(s.argmax_step, 1);
+  EXPECT_NEAR(s.max_step_fraction, 0.03, 1e-15);
+}
+
 TEST(ScanAtoms, RadiusOrMassThatIsNotPositiveIsAnInputFault)
 {
   // a zero radius would make |v| dt / r infinite (a moving sphere) or NaN (at
