@@ -289,7 +289,7 @@ ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
     if (!has_normal(c)) continue;
     ++with_normal;
     const double density = relative_fabric_density(c, fabric);
-    if (!(density > 0.0)) continue;
+    if (!model_density_usable(density)) continue;
     chi_n += (c.fn / density) * normal_dyad(c);
     chi_t += (c.ft / density) * symmetric_normal_tangent(c);
   }

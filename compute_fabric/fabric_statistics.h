@@ -37,6 +37,19 @@ struct Contact {
 // and of the stability index.
 constexpr double kCoincidentFraction = 1e-12;
 
+// A contact's fabric density relative to the mean, w = 1 + a:nn (2D: 1 + a cos
+// 2(theta - theta_a)), weights it by 1/w in the force tensors; at or below
+// kMinModelDensity the model cannot describe it and the contact adds no force.
+// Not 0: w = 0 in exact arithmetic (e.g. 4 contacts along z and 1 along x in 3D:
+// a_xx = -1) comes out as +2e-16 in floating point, and a weight of 4.5e15 made
+// f0 9e13 N. The fabric's round-off is ~1e-15 (components up to 7.5 of sums of
+// unit dyads), so 1e-12 is zero to round-off and no physical density is as low.
+constexpr double kMinModelDensity = 1e-12;
+inline bool model_density_usable(double w)
+{
+  return w > kMinModelDensity;
+}
+
 // The contact of a and b from the branch vector l (see Contact), the force (fx, fy)
 // on b and the radius sum r_a + r_b (wall: r_a): n = l / |l|, fn = f.n, ft = f.t.
 // Without a normal (|l| <= kCoincidentFraction * radius_sum, l not finite, or
@@ -152,7 +165,7 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram &h,
 //   chi_t = sym((1/N) sum ft n (x) t / w);  at = 2 (chi_t1 - chi_t2) / f0
 // over the N contacts with a normal; theta_n, theta_t along the major eigenvectors. For the model
 // roses above this returns (an, theta_n, f0, at, theta_t) exactly. The model density is only valid
-// for a < 1; contacts where w <= 0 are skipped (the model cannot describe them).
+// for a < 1; contacts where w <= 0 (kMinModelDensity) are skipped (the model cannot describe them).
 ForceAnisotropy force_anisotropy_tensor(const std::vector<Contact> &contacts,
                                         const Anisotropy &fabric);
 

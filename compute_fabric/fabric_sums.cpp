@@ -173,7 +173,7 @@ void ForceTensorSums::add(const Contact &c, const Anisotropy &fabric, double the
   if (!has_normal(c)) return;
   with_normal.add(1.0);
   const double density = 1.0 + fabric.a * std::cos(2.0 * theta - 2.0 * fabric.theta);
-  if (!(density > 0.0)) return;
+  if (!model_density_usable(density)) return;
   const double wn = c.fn / density, wt = c.ft / density;
   chi_n_xx.add(wn * (c.nx * c.nx));
   chi_n_xy.add(wn * (c.nx * c.ny));

@@ -135,7 +135,7 @@ void ForceSums3::add(const Contact3 &c, const Eigen::Matrix3d &fabric)
   if (!has_normal(c)) return;
   sum[WITH_NORMAL].add(1.0);
   const double w = 1.0 + c.n.dot(fabric * c.n);
-  if (!(w > 0.0)) {
+  if (!model_density_usable(w)) { // w <= 0 up to round-off
     sum[SKIPPED].add(1.0);
     return;
   }
@@ -158,8 +158,12 @@ ForceAnisotropy3 force_anisotropy(const ForceSums3 &sums)
   if (!(n > 0.0)) return r;
   const Eigen::Matrix3d chi_n = symmetric_of(&sums.sum[ForceSums3::CHI_N]) / n;
   const Eigen::Matrix3d chi_t = full_of(&sums.sum[ForceSums3::CHI_T]) / n;
-  r.f0 = chi_n.trace();
-  if (r.f0 == 0.0) return r; // no force: no force anisotropy
+  const double f0 = chi_n.trace();
+  // no compressive mean force (no force, or tension: the viscous part of separating
+  // contacts): no force anisotropy to scale by it, and f0 = 0, as in 2D. A NaN (a
+  // contact force from a NaN velocity) is not hidden as 0: it goes on to the outputs
+  if (f0 <= 0.0) return r;
+  r.f0 = f0;
   r.normal = anisotropy_of(7.5 * deviator(chi_n) / r.f0);
   r.tangential = anisotropy_of(2.5 * (chi_t + chi_t.transpose()) / r.f0);
   return r;

@@ -76,7 +76,8 @@ struct ContactSums3 : FieldSums<17> {
 // The second pass, once the fabric is known: the weighted force sums.
 struct ForceSums3 : FieldSums<17> {
   enum Field { WITH_NORMAL, SKIPPED, CHI_N, CHI_T = CHI_N + 6, FIELDS = CHI_T + 9 };
-  // contacts whose weight w <= 0 (a strong fabric, outside the model's range)
+  // contacts whose weight w <= 0 (a strong fabric, outside the model's range;
+  // kMinModelDensity: 0 up to round-off)
   // count in N but add no force; their number is SKIPPED
   void add(const Contact3 &c, const Eigen::Matrix3d &fabric);
 };

@@ -50,11 +50,12 @@ const std::string TORQUE_USAGE =
 /* ---------------------------------------------------------------------- */
 
 FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), alpha(0.0), damp_torque(DEFAULT_TORQUE), nmax(0), damping_force(nullptr)
+  : Fix(lammps, narg, arg), alpha(0.0), damp_torque(DEFAULT_TORQUE), damping_force(nullptr)
 {
   peratom_flag = 1; // the damping force F_d of the step, per atom
   size_peratom_cols = 3;
   peratom_freq = 1;
+  create_attribute = 1; // set_arrays: an atom created between runs has F_d = 0
 
   // without rotational degrees of freedom the default 'torque yes' has nothing to do
   const bool has_rotation = atom->torque_flag && atom->omega_flag;
@@ -80,12 +81,17 @@ FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
   }
   if (!have_alpha) args.required("alpha", ALPHA_USAGE);
   if (!torque_given && !has_rotation) damp_torque = false;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
 }
 
 /* ---------------------------------------------------------------------- */
 
 FixDampingLocal::~FixDampingLocal()
 {
+  atom->delete_callback(id, 0);
   memory->destroy(damping_force);
 }
 
@@ -152,13 +158,6 @@ void FixDampingLocal::post_force(int)
   int *mask = atom->mask;
   const int nlocal = atom->nlocal;
 
-  // refilled every step for the atoms owned now: output reads it before they migrate
-  if (nlocal > nmax) {
-    nmax = atom->nmax;
-    memory->destroy(damping_force);
-    memory->create(damping_force, nmax, 3, "damping/local:damping_force");
-    array_atom = damping_force;
-  }
   for (int i = 0; i < nlocal; i++) {
     double *fd = damping_force[i];
     fd[0] = fd[1] = fd[2] = 0.0;
@@ -178,5 +177,37 @@ void FixDampingLocal::post_force(int)
 
 double FixDampingLocal::memory_usage()
 {
-  return 3.0 * nmax * sizeof(double);
+  return 3.0 * atom->nmax * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom array, kept by LIGGGHTS with the atoms (rows up to nmax)
+------------------------------------------------------------------------- */
+
+void FixDampingLocal::grow_arrays(int nmax)
+{
+  memory->grow(damping_force, nmax, 3, "damping/local:damping_force");
+  array_atom = damping_force;
+}
+
+void FixDampingLocal::copy_arrays(int i, int j, int)
+{
+  for (int k = 0; k < 3; k++) damping_force[j][k] = damping_force[i][k];
+}
+
+void FixDampingLocal::set_arrays(int i)
+{
+  damping_force[i][0] = damping_force[i][1] = damping_force[i][2] = 0.0;
+}
+
+int FixDampingLocal::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < 3; k++) buf[k] = damping_force[i][k];
+  return 3;
+}
+
+int FixDampingLocal::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < 3; k++) damping_force[nlocal][k] = buf[k];
+  return 3;
 }

@@ -28,7 +28,9 @@ namespace LAMMPS_NS {
 // The law is in local_damping.h, which fixes may follow it and the warning
 // about the others in damping_order.h (no LIGGGHTS). The damping force of the
 // step is kept per atom (an N x 3 array) for output, e.g. its moment about the
-// sample centre: the bias it puts on a boundary stress.
+// sample centre: the bias it puts on a boundary stress; LIGGGHTS grows and
+// moves it with the atoms (atom->add_callback), so output read between runs,
+// after atoms were deleted or created, gives each atom its own value.
 class FixDampingLocal : public Fix {
  public:
   FixDampingLocal(class LAMMPS *, int, char **);
@@ -38,11 +40,17 @@ class FixDampingLocal : public Fix {
   void setup(int);
   void post_force(int);
   double memory_usage();
+  // the per-atom damping force follows its atom (delete_atoms, sorting, migration)
+  // and is 0 for an atom created since the last step
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  void set_arrays(int);
+  int pack_exchange(int, double *);
+  int unpack_exchange(int, double *);
 
  private:
   double alpha;
   bool damp_torque;
-  int nmax;                           // rows allocated in damping_force
   double **damping_force;             // F_d of the last step, owned atoms (0 outside the group)
   std::set<std::string> warned_order; // fixes warned about (once each) for their order
 };

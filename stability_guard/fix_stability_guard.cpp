@@ -25,6 +25,7 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "pair.h"
 #include "update.h"
@@ -36,6 +37,7 @@
 
 #include "stability_messages.h"
 #include "stability_checks.h"
+#include "rank_choice.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -94,19 +96,6 @@ const std::string ILIMIT_USAGE =
 const std::string INERTIAL_USAGE =
     "inertial R P, the strain rate R >= 0 (1/time; use abs() for a signed rate) and the "
     "pressure P > 0 (force/area), each a number or v_name of an equal-style variable";
-
-// a value and the atom ID it belongs to, for MPI_MAXLOC over the ranks
-struct ValueTag {
-  double value;
-  int tag;
-};
-
-ValueTag max_over_ranks(ValueTag local, MPI_Comm world)
-{
-  ValueTag global;
-  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  return global;
-}
 
 } // namespace
 
@@ -167,14 +156,10 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
   std::fill(values, values + VECTOR_SIZE, 0.0);
 }
 
-/* ---------------------------------------------------------------------- */
-
 int FixStabilityGuard::setmask()
 {
   return END_OF_STEP;
 }
-
-/* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::init()
 {
@@ -200,21 +185,25 @@ void FixStabilityGuard::init()
 
 void FixStabilityGuard::setup(int)
 {
+  maxtag0 = 0; // the atoms of the run: those of the group now, tags up to the largest
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) maxtag0 = std::max(maxtag0, atom->tag[i]);
+  MPI_Allreduce(MPI_IN_PLACE, &maxtag0, 1, MPI_INT, MPI_MAX, world);
   natoms0 = count_group_atoms();
-  run_checks(false);
+  run_checks(false, true);
+  // what a variable of 'inertial' reads (a per-atom virial, say) is needed at the first check
+  if (check_inertial) modify->addstep_compute_all((update->ntimestep / nevery + 1) * nevery);
 }
-
-/* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::end_of_step()
 {
-  run_checks(check_inertial);
+  run_checks(check_inertial, false);
 }
 
-// the checks of the setup and of every N steps; their measures are the output
-void FixStabilityGuard::run_checks(bool inertial)
+// the checks of the setup (at_start) and of every N steps; their measures are the output
+void FixStabilityGuard::run_checks(bool inertial, bool at_start)
 {
-  values[STEP_FRACTION] = check_atoms();
+  values[STEP_FRACTION] = check_atoms(at_start);
   values[LOST] = static_cast<double>(check_lost_atoms());
   values[OVERLAP] = check_overlaps();
   if (inertial) values[INERTIAL] = check_inertial_number();
@@ -265,22 +254,37 @@ void FixStabilityGuard::restart(char *raw)
    Returns the largest |v| dt / r.
 ------------------------------------------------------------------------- */
 
-double FixStabilityGuard::check_atoms()
+double FixStabilityGuard::check_atoms(bool at_start)
 {
-  const stability::AtomScan scan =
-      stability::scan_atoms(static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f,
-                            atom->radius, atom->mask, groupbit, update->dt, atom->tag);
+  const stability::AtomScan scan = stability::scan_atoms(
+      static_cast<size_t>(atom->nlocal), atom->x, atom->v, atom->f, atom->radius, atom->mask,
+      groupbit, update->dt, atom->rmass_flag ? atom->rmass : nullptr, atom->tag);
   const double dt_ratio = values[TIME_STEP_RATIO];
 
+  // a radius or mass that is not a positive number: the input's fault, named first
+  long bad_size = scan.bad_size;
+  MPI_Allreduce(MPI_IN_PLACE, &bad_size, 1, MPI_LONG, MPI_SUM, world);
+  const int ib = static_cast<int>(scan.first_bad_size);
+  if (bad_size > 0) {
+    double size[2] = {ib >= 0 ? atom->radius[ib] : 0.0,
+                      ib >= 0 && atom->rmass_flag ? atom->rmass[ib] : 0.0};
+    const int first = stability::name_first(world, ib >= 0 ? atom->tag[ib] : LLONG_MAX, size, 2);
+    fail(msg(stability::size_error(bad_size, update->ntimestep, first, size[0], size[1],
+                                   atom->rmass_flag)));
+  }
   long nonfinite = scan.nonfinite;
   MPI_Allreduce(MPI_IN_PLACE, &nonfinite, 1, MPI_LONG, MPI_SUM, world);
-  if (nonfinite > 0) {
-    int first = scan.first_nonfinite >= 0 ? atom->tag[scan.first_nonfinite] : INT_MAX;
-    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, world);
-    fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio)));
+  const int in = static_cast<int>(scan.first_nonfinite);
+  if (nonfinite > 0) { // a non-finite position or velocity on any rank before a force
+    const bool force_only = scan.first_kind == stability::NonFinite::Force;
+    double kind = static_cast<double>(scan.first_kind);
+    const int first = stability::name_first(
+        world, in >= 0 ? (force_only ? 1LL << 32 : 0LL) + atom->tag[in] : LLONG_MAX, &kind, 1);
+    fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio,
+                                        static_cast<stability::NonFinite>(static_cast<int>(kind)),
+                                        at_start)));
   }
-
-  const ValueTag fastest = max_over_ranks(
+  const stability::ValueTag fastest = stability::max_over_ranks(
       {scan.max_step_fraction, scan.argmax_step >= 0 ? atom->tag[scan.argmax_step] : 0}, world);
   const stability::StepVerdict verdict = stability::judge_step_fraction(fastest.value, move_limit);
   if (verdict != stability::StepVerdict::Within)
@@ -291,18 +295,20 @@ double FixStabilityGuard::check_atoms()
 
 /* ---------------------------------------------------------------------- */
 
+// atoms inserted during the run (fix insert/*: larger tags) are not counted
 bigint FixStabilityGuard::count_group_atoms()
 {
   bigint n = 0;
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) n++;
+    if ((atom->mask[i] & groupbit) && atom->tag[i] <= maxtag0) n++;
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   return n;
 }
 
 /* ----------------------------------------------------------------------
    with 'thermo_modify lost ignore' LIGGGHTS drops atoms that leave a
-   fixed boundary silently; a biaxial or triaxial sample must keep every particle
+   fixed boundary silently; a biaxial or triaxial sample must keep every particle.
+   Atoms inserted since the setup neither hide a loss nor count as negative ones
 ------------------------------------------------------------------------- */
 
 bigint FixStabilityGuard::check_lost_atoms()
@@ -322,22 +328,23 @@ double FixStabilityGuard::check_overlaps()
 {
   stability::OverlapScan scan;
   if (const NeighList *list = force->pair ? force->pair->list : nullptr)
-    scan = stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
-                                    NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit,
-                                    atom->tag);
-  // the pair's lower ID (i); of tied pairs the lowest IDs, on any rank
-  const ValueTag local{scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0};
-  const ValueTag worst = max_over_ranks(local, world);
+    scan =
+        stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
+                                 NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit, atom->tag);
+  const stability::ValueTag worst =
+      stability::max_over_ranks({scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0}, world);
   if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
-
-  // its partner: the lowest over the ranks that found that maximum and that atom
-  int partner = local.value == worst.value && local.tag == worst.tag && scan.j >= 0
-                    ? atom->tag[scan.j]
-                    : INT_MAX;
-  MPI_Allreduce(MPI_IN_PLACE, &partner, 1, MPI_INT, MPI_MIN, world);
+  // of the ranks with the largest overlap, the pair of the smallest tags
+  double pair[2] = {scan.i >= 0 ? 1.0 * atom->tag[scan.i] : 0,
+                    scan.j >= 0 ? 1.0 * atom->tag[scan.j] : 0};
+  const bool mine = scan.i >= 0 && scan.max_fraction == worst.value;
+  stability::name_first(
+      world,
+      mine ? stability::pair_key(static_cast<int>(pair[0]), static_cast<int>(pair[1])) : LLONG_MAX,
+      pair, 2);
   warned_overlap = true;
-  warn(stability::overlap_warning(worst.tag, partner, worst.value, update->ntimestep, overlap_limit,
-                                  OVERLAP + 1));
+  warn(stability::overlap_warning(static_cast<int>(pair[0]), static_cast<int>(pair[1]), worst.value,
+                                  update->ntimestep, overlap_limit, OVERLAP + 1));
   return worst.value;
 }
 
@@ -350,6 +357,7 @@ double FixStabilityGuard::check_inertial_number()
 {
   const double rate = rate_in.evaluate(lmp);
   const double pressure = pressure_in.evaluate(lmp);
+  modify->addstep_compute(update->ntimestep + nevery); // and at the next check
   const stability::InertialCheck inertial =
       stability::check_inertial_number(rate, pressure, d50, density);
   if (inertial.status == stability::InertialStatus::BadRate)
@@ -382,8 +390,6 @@ void FixStabilityGuard::fail(const std::string &text)
   error->all(FLERR, text.c_str());
   std::abort(); // Error::all does not return; tells the compiler so
 }
-
-/* ---------------------------------------------------------------------- */
 
 void FixStabilityGuard::warn(const std::string &text)
 {

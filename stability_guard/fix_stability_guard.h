@@ -56,14 +56,16 @@ class FixStabilityGuard : public Fix {
 
   double d50, density; // of the group, for the inertial number
   bigint natoms0;      // group atoms at setup
+  int maxtag0 = 0;     // their largest tag (later ones were inserted during the run)
   double values[VECTOR_SIZE];
   bool warned_overlap, warned_inertial;
   double warned_dt = 0.0; // the time step last warned about
   int warnings;
 
   // each check returns its measure; the ones that stop the run raise the error
-  void run_checks(bool inertial);
-  double check_atoms();
+  // at_start: the checks of the setup of a run (what they find, the input gave)
+  void run_checks(bool inertial, bool at_start);
+  double check_atoms(bool at_start);
   bigint check_lost_atoms();
   double check_overlaps();
   double check_inertial_number();

@@ -51,19 +51,41 @@ bool finite3(const double *a)
 
 AtomScan scan_atoms(std::size_t n, const double *const *x, const double *const *v,
                     const double *const *f, const double *radius, const int *mask, int groupbit,
-                    double dt, const int *tag)
+                    double dt, const double *rmass, const int *tag)
 {
-  // of two atoms, whether atom a is named before atom b
-  auto before = [tag](std::size_t a, long b) { return tag && tag[a] < tag[b]; };
   AtomScan s;
+  // the smaller tag (or index) of i and the atom named so far
+  const auto before = [tag](std::size_t i, long named) {
+    if (named < 0) return true;
+    return tag ? tag[i] < tag[named] : static_cast<long>(i) < named;
+  };
+  const auto valid_size = [](double value) { return std::isfinite(value) && value > 0.0; };
   for (std::size_t i = 0; i < n; i++) {
     if (!(mask[i] & groupbit)) continue;
-    if (!finite3(x[i]) || !finite3(v[i]) || !finite3(f[i])) {
-      if (s.nonfinite++ == 0 || before(i, s.first_nonfinite))
+    const bool size_ok = valid_size(radius[i]) && (!rmass || valid_size(rmass[i]));
+    if (!size_ok) {
+      s.bad_size++;
+      if (before(i, s.first_bad_size)) s.first_bad_size = static_cast<long>(i);
+    }
+    const NonFinite kind = !finite3(x[i])   ? NonFinite::Position
+                           : !finite3(v[i]) ? NonFinite::Velocity
+                           : !finite3(f[i]) ? NonFinite::Force
+                                            : NonFinite::None;
+    if (kind != NonFinite::None) {
+      s.nonfinite++;
+      // a position or velocity is named before a force, then the smaller tag
+      const bool state = kind != NonFinite::Force;
+      const bool named_state = s.first_kind != NonFinite::Force && s.first_kind != NonFinite::None;
+      if (s.first_nonfinite < 0 || (state && !named_state) ||
+          (state == named_state && before(i, s.first_nonfinite))) {
         s.first_nonfinite = static_cast<long>(i);
+        s.first_kind = kind;
+      }
       continue;
     }
+    if (!size_ok) continue;
     const double frac = step_fraction(v[i][0], v[i][1], v[i][2], dt, radius[i]);
+    // of equal fractions the smaller tag: the atom named does not depend on the ranks
     if (s.argmax_step < 0 || frac > s.max_step_fraction ||
         (frac == s.max_step_fraction && before(i, s.argmax_step))) {
       s.max_step_fraction = frac;
@@ -79,10 +101,15 @@ StepVerdict judge_step_fraction(double fraction, double limit)
   return fraction > STEP_FRACTION_BLOWN_UP ? StepVerdict::BlownUp : StepVerdict::AboveLimit;
 }
 
+long long pair_key(int tag_a, int tag_b)
+{
+  const long long lo = tag_a < tag_b ? tag_a : tag_b, hi = tag_a < tag_b ? tag_b : tag_a;
+  return (lo << 32) | hi;
+}
+
 OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
                           const int *const *firstneigh, int neighmask, const double *const *x,
-                          const double *radius, const int *mask, int groupbit,
-                          const int *tag)
+                          const double *radius, const int *mask, int groupbit, const int *tag)
 {
   OverlapScan s;
   for (int ii = 0; ii < inum; ii++) {
@@ -91,18 +118,11 @@ OverlapScan scan_overlaps(int inum, const int *ilist, const int *numneigh,
     for (int jj = 0; jj < numneigh[i]; jj++) {
       const int j = firstneigh[i][jj] & neighmask;
       if (!(mask[j] & groupbit)) continue;
-      const double frac =
-          overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2], radius[i],
-                           radius[j]);
-      if (!tag) {
-        if (frac > s.max_fraction) s = {frac, i, j};
-        continue;
-      }
-      const long lo = tag[j] < tag[i] ? j : i, hi = lo == i ? j : i;
-      if (frac > s.max_fraction ||
-          (frac == s.max_fraction && s.i >= 0 &&
-           (tag[lo] < tag[s.i] || (tag[lo] == tag[s.i] && tag[hi] < tag[s.j]))))
-        s = {frac, lo, hi};
+      const double frac = overlap_fraction(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2],
+                                           radius[i], radius[j]);
+      const bool tie_before = tag && frac == s.max_fraction && s.i >= 0 &&
+                              pair_key(tag[i], tag[j]) < pair_key(tag[s.i], tag[s.j]);
+      if (frac > s.max_fraction || tie_before) s = {frac, i, j};
     }
   }
   return s;

@@ -1,6 +1,7 @@
 #include "stability_messages.h"
 
 #include <cstdarg>
+#include <cmath>
 #include <cstdio>
 
 namespace stability {
@@ -61,21 +62,49 @@ std::string unstable_hint(double time_step_ratio)
                 time_step_ratio, TIME_STEP_SAFE);
 }
 
-std::string nonfinite_error(long count, long long step, int first, double time_step_ratio)
+std::string nonfinite_error(long count, long long step, int first, double time_step_ratio,
+                            NonFinite kind, bool at_start)
 {
-  return format("%ld atom(s) have a non-finite position, velocity or force at step %lld (first: "
-                "atom %d): the run has gone unstable; ",
-                count, step, first) +
-         unstable_hint(time_step_ratio);
+  const char *what = kind == NonFinite::Position   ? "position"
+                     : kind == NonFinite::Velocity ? "velocity"
+                     : kind == NonFinite::Force    ? "force"
+                                                   : nullptr;
+  std::string text = format("%ld atom(s) have a non-finite position, velocity or force at step "
+                            "%lld (first: atom %d): ",
+                            count, step, first);
+  if (what) text += format("its %s is not finite", what);
+  if (at_start)
+    return text + (what ? " " : "") +
+           "at the start of the run, before any step of it: the input gave it (velocity, set, "
+           "read_data, displace_atoms or an earlier run; two atoms at one centre get a "
+           "non-finite contact force), not an instability; give every atom a finite position "
+           "and velocity and its own centre";
+  return text + (what ? "; " : "") + "the run has gone unstable; " + unstable_hint(time_step_ratio);
+}
+
+std::string size_error(long count, long long step, int tag, double radius, double mass,
+                       bool has_mass)
+{
+  // NaN without its sign: "nan", never "-nan"
+  const auto unsigned_nan = [](double x) { return std::isnan(x) ? std::fabs(x) : x; };
+  const std::string size =
+      has_mass ? format("radius %g m, mass %g kg", unsigned_nan(radius), unsigned_nan(mass))
+               : format("radius %g m", unsigned_nan(radius));
+  return format("%ld atom(s) of the group have a radius or mass that is not a finite number > 0 "
+                "at step %lld (first: atom %d, %s): a fault of the input, not an instability; "
+                "give every particle a diameter > 0 and a density > 0 (set ... diameter / "
+                "density, create_atoms, read_data)",
+                count, step, tag, size.c_str());
 }
 
 std::string step_error(int tag, double fraction, long long step, double limit, StepVerdict verdict,
                        double time_step_ratio)
 {
-  const std::string what = verdict == StepVerdict::BlownUp
-                               ? std::string("the run has gone unstable (kinetic energy blow-up)")
-                               : format("faster than 'move' allows (unstable runs move particles > %g)",
-                                        STEP_FRACTION_BLOWN_UP);
+  const std::string what =
+      verdict == StepVerdict::BlownUp
+          ? std::string("the run has gone unstable (kinetic energy blow-up)")
+          : format("faster than 'move' allows (unstable runs move particles > %g)",
+                   STEP_FRACTION_BLOWN_UP);
   return format("atom %d moved %.3g of its radius in one step at step %lld (limit %g; a "
                 "quasi-static test moves particles < %g): ",
                 tag, fraction, step, limit, STEP_FRACTION_QUASI_STATIC) +

@@ -25,8 +25,17 @@ std::string time_step_warning(double dt, double mass_min, double stiffness_max, 
 // three when the ratio is unknown (0: no linear stiffness table).
 std::string unstable_hint(double time_step_ratio);
 
-// `count` atoms have a non-finite x, v or f, the first of them atom `first`.
-std::string nonfinite_error(long count, long long step, int first, double time_step_ratio);
+// `count` atoms have a non-finite x, v or f, the one named atom `first` (its
+// `kind`, AtomScan::first_kind; None: not said). `at_start`: found at the setup
+// of a run, before it made a step: the input gave it, not an instability.
+std::string nonfinite_error(long count, long long step, int first, double time_step_ratio,
+                            NonFinite kind = NonFinite::None, bool at_start = false);
+
+// `count` atoms of the group have a radius or mass that is not a finite number
+// > 0, the one named atom `tag` with that `radius` and (has_mass: atoms have a
+// per-atom mass) `mass`: a fault of the input.
+std::string size_error(long count, long long step, int tag, double radius, double mass,
+                       bool has_mass);
 
 // Atom `tag` moved `fraction` of its radius in one step, above the 'move' limit
 // (`verdict` is judge_step_fraction(fraction, limit), not Within).

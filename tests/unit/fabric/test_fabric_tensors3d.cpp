@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -155,6 +156,51 @@ TEST(FabricTensors3d, SkipsContactsOutsideTheModel)
   EXPECT_EQ(r.force.skipped, 1);
   // chi_n = (1/10) 9 zz / w_z, w_z = 1 + a_zz = 1 + 7.5 (0.9 - 1/3)
   EXPECT_NEAR(r.force.f0, 0.9 / (1.0 + 7.5 * (0.9 - 1.0 / 3.0)), 1e-14);
+}
+
+TEST(FabricTensors3d, DensityZeroUpToRoundOffIsOutsideTheModel)
+{
+  // four contacts along z, one along x: a_xx = 7.5 (1/5 - 1/3) = -1 exactly, w_x = 0,
+  // which comes out as +2.2e-16: weighted by 1/w it made f0 = 9e13 N. Skipped as w <= 0.
+  std::vector<Vector3d> axes(4, Vector3d(0, 0, 1));
+  axes.push_back(Vector3d(1, 0, 0));
+  const Fits r = fit(sampled(axes, 0.1, Matrix3d::Zero(), Matrix3d::Zero(), 1e-3));
+  EXPECT_NEAR(r.fabric.a(0, 0), -1.0, 1e-14);
+  EXPECT_EQ(r.force.skipped, 1);
+  // chi_n = (1/5) 4 x 0.1 zz / w_z, w_z = 1 + 7.5 (4/5 - 1/3) = 4.5: f0 = 0.08/4.5
+  EXPECT_NEAR(r.force.f0, 0.08 / 4.5, 1e-15);
+  // all the force along z: a_n = 15/2 dev(zz) = diag(-2.5, -2.5, 5)
+  EXPECT_NEAR(r.force.normal.a(2, 2), 5.0, 1e-12);
+  EXPECT_NEAR(r.force.normal.invariant, 7.5, 1e-12);
+  EXPECT_TRUE(fabric::model_density_usable(1e-9));
+  EXPECT_FALSE(fabric::model_density_usable(2.2e-16));
+}
+
+TEST(FabricTensors3d, TensileMeanForceGivesNoForceAnisotropy)
+{
+  // one contact in tension along x (f_n = -0.1) and a weaker compressive one along z:
+  // f0 = tr chi_n = (-0.1/w_x + 0.05/w_z)/2 < 0: f0, a_n, a_t are 0 (as in 2D), not
+  // a_n scaled by a negative or vanishing f0
+  std::vector<Contact3> contacts = {
+      fabric::make_contact3(1, 2, Vector3d(1e-3, 0, 0), Vector3d(-0.1, 0, 0.02), 1e-3),
+      fabric::make_contact3(3, 4, Vector3d(0, 0, 1e-3), Vector3d(0, 0, 0.05), 1e-3)};
+  const Fits r = fit(contacts);
+  EXPECT_EQ(r.force.f0, 0.0);
+  EXPECT_EQ(r.force.normal.invariant, 0.0);
+  EXPECT_EQ(r.force.tangential.invariant, 0.0);
+  EXPECT_NEAR(r.fabric.invariant, 3.75, 1e-12); // the fabric is there
+}
+
+TEST(FabricTensors3d, NonFiniteForceIsNotHiddenAsZero)
+{
+  // a NaN velocity gives its contacts NaN forces: f0 and a_n are NaN, not 0
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Contact3> contacts = {
+      fabric::make_contact3(1, 2, Vector3d(1e-3, 0, 0), Vector3d(nan, 0, 0), 1e-3),
+      fabric::make_contact3(3, 4, Vector3d(0, 0, 1e-3), Vector3d(0, 0, 0.05), 1e-3)};
+  const Fits r = fit(contacts);
+  EXPECT_TRUE(std::isnan(r.force.f0));
+  EXPECT_TRUE(std::isnan(r.force.normal.invariant));
 }
 
 TEST(FabricTensors3d, LoveWeberStressByHand)

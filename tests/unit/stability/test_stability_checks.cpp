@@ -46,9 +46,8 @@ TEST(OverlapFraction, HandWorked)
   // radii 1 and 0.5 mm, centres 1.4 mm apart: overlap 0.1 mm / 0.5 mm = 0.2
   EXPECT_NEAR(overlap_fraction(1.4e-3, 0.0, 0.0, 1e-3, 0.5e-3), 0.2, 1e-12);
   // apart by 0.6 * sqrt(2)... along a diagonal: distance 1.6 mm -> gap 0.1 mm -> -0.2
-  EXPECT_NEAR(
-      overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 0.0, 1e-3, 0.5e-3), -0.2,
-      1e-12);
+  EXPECT_NEAR(overlap_fraction(1.6e-3 / std::sqrt(2.0), 1.6e-3 / std::sqrt(2.0), 0.0, 1e-3, 0.5e-3),
+              -0.2, 1e-12);
   // in 3D along (2, 3, 6)/7: distance 1.4 mm -> overlap 0.1 mm -> 0.2
   EXPECT_NEAR(overlap_fraction(0.4e-3, 0.6e-3, 1.2e-3, 1e-3, 0.5e-3), 0.2, 1e-12);
 }
@@ -119,31 +118,70 @@ TEST(ScanAtoms, NonFiniteValuesAreCountedNotMeasured)
   EXPECT_NEAR(s.max_step_fraction, 0.005, 1e-15);
 }
 
-// A rank holds its atoms in an order of its own: of atoms tied for the
-// largest step, and of the non-finite ones, the lowest ID is named (as
-// MPI_MAXLOC and MIN do over the ranks), not the first in the rank's order.
-TEST(ScanAtoms, TiesNameTheLowestId)
+TEST(ScanAtoms, NamesTheCauseByTagNotItsNeighbours)
 {
-  Atoms a(4);
-  const int tag[4] = {7, 3, 5, 2};
-  a.vs[0] = {1.0, 0.0, 0.0};  // 0.01, ID 7
-  a.vs[1] = {0.0, -1.0, 0.0}; // 0.01, ID 3
-  a.vs[2] = {0.5, 0.0, 0.0};  // 0.005
-  a.xs[3][0] = std::numeric_limits<double>::quiet_NaN(); // ID 2: not measured
-  AtomScan s = a.scan(1e-5, tag);
-  EXPECT_EQ(s.argmax_step, 1);
-  EXPECT_EQ(s.max_step_fraction, 0.01);
-  EXPECT_EQ(s.first_nonfinite, 3);
-  EXPECT_EQ(a.scan(1e-5).argmax_step, 0); // without IDs: the first index
-  // non-finite atoms with IDs 7 (index 0) and 5 (index 2): ID 5
-  a.xs[3][0] = 0.0;
-  a.fs[0][1] = std::numeric_limits<double>::infinity();
-  a.vs[2][2] = std::numeric_limits<double>::quiet_NaN();
-  s = a.scan(1e-5, tag);
-  EXPECT_EQ(s.nonfinite, 2);
+  // a NaN velocity (tag 9) gives its neighbours (tags 2 and 30) NaN contact forces:
+  // the velocity is named, whatever the order of the atoms on the rank
+  Atoms a(3);
+  const int tags[3] = {30, 9, 2};
+  a.fs[0][0] = std::numeric_limits<double>::quiet_NaN();
+  a.vs[1][2] = std::numeric_limits<double>::quiet_NaN();
+  a.fs[2][1] = std::numeric_limits<double>::quiet_NaN();
+  AtomScan s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5,
+                          nullptr, tags);
+  EXPECT_EQ(s.nonfinite, 3);
+  EXPECT_EQ(s.first_nonfinite, 1);
+  EXPECT_EQ(s.first_kind, NonFinite::Velocity);
+  // forces only: the smallest tag, not the first index
+  a.vs[1][2] = 0.0;
+  a.fs[1][2] = std::numeric_limits<double>::infinity();
+  s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5, nullptr,
+                 tags);
   EXPECT_EQ(s.first_nonfinite, 2);
+  EXPECT_EQ(s.first_kind, NonFinite::Force);
+  // a position is named as such, before the velocity of the same atom
+  a.xs[0][1] = std::numeric_limits<double>::infinity();
+  a.vs[0][1] = std::numeric_limits<double>::quiet_NaN();
+  s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5, nullptr,
+                 tags);
+  EXPECT_EQ(s.first_nonfinite, 0);
+  EXPECT_EQ(s.first_kind, NonFinite::Position);
+}
+
+TEST(ScanAtoms, EqualStepFractionsNameTheSmallestTag)
+{
+  Atoms a(3);
+  const int tags[3] = {8, 2, 5};
+  for (auto &v : a.vs) v = {0.0, 0.0, 3.0}; // all alike: 0.03
+  const AtomScan s = scan_atoms(3, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1,
+                                1e-5, nullptr, tags);
   EXPECT_EQ(s.argmax_step, 1);
-  EXPECT_EQ(a.scan(1e-5).first_nonfinite, 0);
+  EXPECT_NEAR(s.max_step_fraction, 0.03, 1e-15);
+}
+
+TEST(ScanAtoms, RadiusOrMassThatIsNotPositiveIsAnInputFault)
+{
+  // a zero radius would make |v| dt / r infinite (a moving sphere) or NaN (at
+  // rest): counted apart and left out of the largest step fraction
+  Atoms a(4);
+  const int tags[4] = {4, 3, 2, 1};
+  std::vector<double> mass(4, 1e-6);
+  a.vs[0] = {1.0, 0.0, 0.0}; // 0.01
+  a.r[1] = 0.0;
+  a.vs[1] = {0.0, 0.0, 1.0};
+  mass[2] = 0.0; // density 0
+  a.r[3] = std::numeric_limits<double>::quiet_NaN();
+  a.mask[3] = 0; // outside the group: ignored
+  AtomScan s = scan_atoms(4, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5,
+                          mass.data(), tags);
+  EXPECT_EQ(s.bad_size, 2);
+  EXPECT_EQ(s.first_bad_size, 2); // tag 2 < tag 3
+  EXPECT_EQ(s.argmax_step, 0);
+  EXPECT_NEAR(s.max_step_fraction, 0.01, 1e-15);
+  // without per-atom masses only the radius is checked
+  s = scan_atoms(4, a.x.data(), a.v.data(), a.f.data(), a.r.data(), a.mask.data(), 1, 1e-5);
+  EXPECT_EQ(s.bad_size, 1);
+  EXPECT_EQ(s.first_bad_size, 1);
 }
 
 TEST(ScanAtoms, EmptyGroup)
@@ -216,47 +254,22 @@ TEST(ScanOverlaps, LargestOverlapOfTheGroup)
   EXPECT_EQ(s.j, 1);
 }
 
-// Two pairs mirrored about x = 0 overlap by exactly the same fraction: with
-// IDs the pair of the lowest IDs is named, lower ID first, whatever the
-// order of the list (each rank has its own).
-TEST(ScanOverlaps, TiedPairsNameTheLowestIds)
+TEST(ScanOverlaps, EqualOverlapsNameTheSmallestPairOfTags)
 {
-  const int tag[4] = {9, 4, 6, 5};
-  Contacts c({{-5e-3, 0, 0}, {-3.1e-3, 0, 0}, {3.1e-3, 0, 0}, {5e-3, 0, 0}},
-             {1e-3, 1e-3, 1e-3, 1e-3}, {{1}, {}, {3}, {}});
-  OverlapScan s = c.scan(~0, tag);
-  EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
-  EXPECT_EQ(s.i, 1); // ID 4
-  EXPECT_EQ(s.j, 0); // ID 9
-  // the same pairs listed the other way round (3 -> 2 first, then 1 -> 0)
-  c.lists = {{}, {0}, {}, {2}};
-  c.ilist = {3, 2, 1, 0};
-  for (std::size_t i = 0; i < c.lists.size(); i++) {
-    c.numneigh[i] = static_cast<int>(c.lists[i].size());
-    c.first[i] = c.lists[i].data();
-  }
-  s = c.scan(~0, tag);
-  EXPECT_EQ(s.i, 1);
-  EXPECT_EQ(s.j, 0);
-  // without IDs: the first pair of the list
-  s = c.scan();
-  EXPECT_EQ(s.i, 3);
-  EXPECT_EQ(s.j, 2);
-}
-
-// One disk overlapping two others by the same fraction (mirrored about it):
-// the partner with the lower ID.
-TEST(ScanOverlaps, TiedPartnersNameTheLowerId)
-{
-  const int tag[3] = {4, 9, 6};
-  const Contacts c({{0, 0, 0}, {-1.9e-3, 0, 0}, {1.9e-3, 0, 0}}, {1e-3, 1e-3, 1e-3},
-                   {{1, 2}, {}, {}});
-  OverlapScan s = c.scan(~0, tag);
+  // 1, 2 and 3 around 0 at 1.9 mm (x, y, -y): equal overlaps 0.1; tags 7, 9, 3, 1 give the
+  // pairs (7, 9), (3, 7), (1, 7): the smallest, (1, 7), whatever the list order
+  Contacts c({{0, 0, 0}, {1.9e-3, 0, 0}, {0, 1.9e-3, 0}, {0, -1.9e-3, 0}}, {1e-3, 1e-3, 1e-3, 1e-3},
+             {{1, 2, 3}, {}, {}, {}});
+  const int tags[4] = {7, 9, 3, 1};
+  const OverlapScan s =
+      scan_overlaps(static_cast<int>(c.ilist.size()), c.ilist.data(), c.numneigh.data(),
+                    c.first.data(), ~0, c.x.data(), c.r.data(), c.mask.data(), 1, tags);
   EXPECT_NEAR(s.max_fraction, 0.1, 1e-12);
   EXPECT_EQ(s.i, 0);
-  EXPECT_EQ(s.j, 2); // ID 6, not 9 (the first in the list)
-  s = c.scan();
-  EXPECT_EQ(s.j, 1);
+  EXPECT_EQ(s.j, 3);
+  EXPECT_EQ(pair_key(7, 1), (1LL << 32) | 7);
+  // without tags: the first found
+  EXPECT_EQ(c.scan().j, 1);
 }
 
 TEST(ScanOverlaps, SpheresStackedAlongZ)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "stability_messages.h"
@@ -41,6 +42,31 @@ TEST(GuardErrors, NonFiniteAndLost)
             std::string::npos);
 }
 
+TEST(GuardErrors, InputFaultsAtTheStartOfARun)
+{
+  EXPECT_EQ(nonfinite_error(6, 0, 5, 0.0861, NonFinite::Velocity, true),
+            "6 atom(s) have a non-finite position, velocity or force at step 0 (first: atom 5): "
+            "its velocity is not finite at the start of the run, before any step of it: the "
+            "input gave it (velocity, set, read_data, displace_atoms or an earlier run; two atoms "
+            "at one centre get a non-finite contact force), not an instability; give every atom "
+            "a finite position and velocity and its own centre");
+  EXPECT_EQ(nonfinite_error(2, 40, 7, 0.0861, NonFinite::Force, false),
+            "2 atom(s) have a non-finite position, velocity or force at step 40 (first: atom 7): "
+            "its force is not finite; the run has gone unstable; the time step is safe (0.0861 x "
+            "sqrt(m_min/k_n), at most 0.15): reduce the servo gain or the loading rate");
+  EXPECT_EQ(size_error(1, 0, 14, 0.0, 0.0, true),
+            "1 atom(s) of the group have a radius or mass that is not a finite number > 0 at step "
+            "0 (first: atom 14, radius 0 m, mass 0 kg): a fault of the input, not an "
+            "instability; give every particle a diameter > 0 and a density > 0 (set ... diameter "
+            "/ density, create_atoms, read_data)");
+  EXPECT_NE(size_error(2, 3, 1, 0.0, 5.0, false).find("(first: atom 1, radius 0 m):"),
+            std::string::npos);
+  // a NaN diameter: radius and mass NaN, printed without a sign
+  const double nan = -std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(size_error(1, 0, 7, nan, nan, true).find("(first: atom 7, radius nan m, mass nan kg)"),
+            std::string::npos);
+}
+
 TEST(GuardErrors, StepBlownUpOrAboveTheLimit)
 {
   EXPECT_EQ(step_error(1, 0.1, 0, 0.05, StepVerdict::BlownUp, 2.0),
@@ -48,11 +74,12 @@ TEST(GuardErrors, StepBlownUpOrAboveTheLimit)
             "test moves particles < 0.001): the run has gone unstable (kinetic energy blow-up); "
             "reduce the time step (now 2 x sqrt(m_min/k_n); 0.15 is safe), the servo gain or the "
             "loading rate");
-  EXPECT_EQ(step_error(1, 0.0200001, 0, 1e-9, StepVerdict::AboveLimit, 0.00367),
-            "atom 1 moved 0.02 of its radius in one step at step 0 (limit 1e-09; a quasi-static "
-            "test moves particles < 0.001): faster than 'move' allows (unstable runs move particles > "
-            "0.05); the time step is safe (0.00367 x sqrt(m_min/k_n), at most 0.15): reduce the "
-            "servo gain or the loading rate");
+  EXPECT_EQ(
+      step_error(1, 0.0200001, 0, 1e-9, StepVerdict::AboveLimit, 0.00367),
+      "atom 1 moved 0.02 of its radius in one step at step 0 (limit 1e-09; a quasi-static "
+      "test moves particles < 0.001): faster than 'move' allows (unstable runs move particles > "
+      "0.05); the time step is safe (0.00367 x sqrt(m_min/k_n), at most 0.15): reduce the "
+      "servo gain or the loading rate");
 }
 
 TEST(GuardWarnings, OverlapNamesThePairInOrder)
