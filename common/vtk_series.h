@@ -158,12 +158,14 @@ class Series {
     return write_file(pvd(), pvd_collection(frames_)) ? "" : std::strerror(errno);
   }
 
-  // The frame of `step` (a step written again replaces its frame); the reason it
-  // could not be written, "" when it was.
+  // The frame of `step`; the reason it could not be written, "" when it was. The
+  // frames at or after `step` go: a step written again replaces its frame, and after
+  // a reset_timestep the later run's frames overwrite the files of the earlier one.
   std::string add(long long step, const std::string &frame)
   {
     const std::string path = frame_path(step);
-    if (frames_.empty() || frames_.back().first != step) frames_.push_back({step, base_name(path)});
+    while (!frames_.empty() && frames_.back().first >= step) frames_.pop_back();
+    frames_.push_back({step, base_name(path)});
     if (!write_file(path, frame) || !write_file(pvd(), pvd_collection(frames_)))
       return std::strerror(errno);
     return "";

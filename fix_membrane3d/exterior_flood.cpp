@@ -3,6 +3,8 @@
 #include "number_text.h"
 #include "power_flood.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -37,24 +39,61 @@ void check_flood_input(const std::vector<Sphere> &spheres, const std::vector<boo
   check_spheres(spheres);
 }
 
+namespace {
+
+// Centres within this RMS distance of one plane, in mean radii, span no volume that a
+// membrane could wrap (a one-sphere-thick wall jittered by 1e-3 d is 6e-4 r thick; a
+// sample two spheres across is about r thick).
+constexpr double kFlatRms = 0.1;
+
+// "in one plane" or "on one line" when the spheres' centres (with their images) lie
+// within kFlatRms of one, else "".
+std::string flatness(const std::vector<Sphere> &spheres)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double r = 0;
+  for (const Sphere &s : spheres) {
+    mean += s.x;
+    r += s.r;
+  }
+  const double n = static_cast<double>(spheres.size());
+  mean /= n;
+  r /= n;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Sphere &s : spheres) covariance += (s.x - mean) * (s.x - mean).transpose() / n;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance, Eigen::EigenvaluesOnly);
+  const double limit = kFlatRms * kFlatRms * r * r;
+  if (eigen.eigenvalues()[1] <= limit) return "on one line";
+  if (eigen.eigenvalues()[0] <= limit) return "in one plane";
+  return "";
+}
+
+[[noreturn]] void flat_sample(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
+                              const std::string &where)
+{
+  const auto images = static_cast<std::size_t>(std::count(sealed.begin(), sealed.end(), true));
+  throw FlatSample("the " + count_text(spheres.size() - images, "sphere", "spheres") +
+                   (images > 0 ? " and their " + count_text(images, "image", "images") +
+                                     " in the platens"
+                               : std::string()) +
+                   " lie " + where + ": they enclose no volume for a membrane to wrap");
+}
+
+} // namespace
+
 PowerFlood::PowerFlood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                        double tolerance)
   : spheres_(spheres), sealed_(sealed), tolerance_(tolerance)
 {
+  const std::string flat = flatness(spheres);
+  if (!flat.empty()) flat_sample(spheres, sealed, flat);
   std::vector<std::pair<power::K::Weighted_point_3, int>> points;
   points.reserve(spheres.size());
   for (std::size_t i = 0; i < spheres.size(); ++i)
     points.emplace_back(power::weighted_point(spheres[i]), static_cast<int>(i));
   triangulation_.insert(points.begin(), points.end());
-  if (triangulation_.dimension() < 3) {
-    const auto images = static_cast<std::size_t>(std::count(sealed.begin(), sealed.end(), true));
-    throw FlatSample("the " + count_text(spheres.size() - images, "sphere", "spheres") +
-                     (images > 0 ? " and their " + count_text(images, "image", "images") +
-                                       " in the platens"
-                                 : std::string()) +
-                     " lie " + (triangulation_.dimension() < 2 ? "on one line" : "in one plane") +
-                     ": they enclose no volume for a membrane to wrap");
-  }
+  if (triangulation_.dimension() < 3)
+    flat_sample(spheres, sealed, triangulation_.dimension() < 2 ? "on one line" : "in one plane");
   for (auto c = triangulation_.all_cells_begin(); c != triangulation_.all_cells_end(); ++c) {
     c->info() = static_cast<int>(cells_.size());
     cells_.push_back(c);

@@ -58,8 +58,8 @@ struct FloodCells {
 };
 
 // The spheres and their platen images span no volume: their centres lie in one plane
-// or on one line (a one-sphere-thick wall, a single column, one layer), so no closed
-// surface encloses them and the triangulation has no cells to flood.
+// or on one line, or within 0.1 mean radii (RMS) of one (a one-sphere-thick wall, a
+// single column, one layer), so no closed surface encloses them (or only slivers).
 struct FlatSample : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };

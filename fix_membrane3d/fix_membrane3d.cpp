@@ -158,17 +158,9 @@ void FixMembrane3d::evaluate_inputs()
 
 void FixMembrane3d::setup_pre_force(int vflag)
 {
-  if (has_checksum && group_checksum(lmp, groupbit, 3) != checksum) forget_membrane();
+  // the group changed between two runs: its member IDs may name other spheres now
+  if (has_checksum && group_checksum(lmp, groupbit, 3) != checksum) member_tags.clear();
   pre_force(vflag);
-}
-
-// The group changed between two runs: its member IDs may name other spheres now.
-void FixMembrane3d::forget_membrane()
-{
-  member_tags.clear();
-  topology = membrane3d::MembraneTopology();
-  detected_at.clear();
-  decided_step = -1;
 }
 
 void FixMembrane3d::setup(int vflag)
@@ -195,17 +187,18 @@ void FixMembrane3d::pre_force(int)
   // that step was decided, and is not counted again
   const bool decided = decided_step == update->ntimestep;
   decided_step = update->ntimestep;
-  bool due = member_tags.empty();
+  // (a step counter set back by reset_timestep or an earlier restart: found anew)
+  bool due = member_tags.empty() || update->ntimestep < last_detection;
   if (!due && every == AUTO && !decided)
     due = automatic.can_have_changed(lmp, groupbit, platens, tolerance, update->ntimestep,
                                      members);
   else if (!due && every != AUTO)
     due = update->ntimestep - last_detection >= every;
-  if (!due && (every != AUTO || decided)) {
-    gather_tags(lmp, groupbit, member_tags, members);
-    // an atom was lost or left the group (a restart read by a fix on another group)
-    due = members.tags.size() != member_tags.size();
-  }
+  // platens moved beyond the tolerance (their images' links), an atom lost or gone from
+  // the group (a restart read by a fix on another group)
+  if (!due && (every != AUTO || decided))
+    due = membrane3d::moved_apart(platens, detected_platens, tolerance) ||
+          gather_tags(lmp, groupbit, member_tags, members) != member_tags.size();
   // one decision for all ranks: a rank that detected alone would wait forever in the
   // gather (with rank 0's inputs every rank holds the same state: this guards against
   // the unforeseen)
@@ -271,6 +264,7 @@ void FixMembrane3d::detect()
   for (int k : index) members.types.push_back(all.types[k]);
   wear_types(all);
   last_detection = update->ntimestep;
+  detected_platens = platens;
   detections += 1.0;
   check_ranks_agree(lmp, PREFIX, member_tags, topology.facets.size());
 }
@@ -343,6 +337,7 @@ void FixMembrane3d::write_restart(FILE *fp)
   state.detections = detections;
   state.member_tags = member_tags;
   state.topology = topology;
+  state.detected_platens = detected_platens;
   state.has_checksum = true;
   state.checksum = group_checksum(lmp, groupbit, 3);
   if (every == AUTO) automatic.save(state);
@@ -377,6 +372,7 @@ void FixMembrane3d::restart(char *raw)
   decided_step = static_cast<bigint>(state.decided_step);
   member_tags = state.member_tags;
   topology = state.topology;
+  detected_platens = state.detected_platens;
   has_checksum = state.has_checksum;
   checksum = state.checksum;
   if (every == AUTO) automatic.restore(state);

@@ -95,6 +95,7 @@ class FixMembrane3d : public Fix {
   membrane3d::MembraneTopology topology;
   std::vector<int> member_tags;
   bigint last_detection = -1;
+  membrane3d::Platens detected_platens{0.0, 0.0}; // at the last detection
   bigint decided_step = -1; // the last step pre_force decided on
   // the group at the end of the last run (or when the restart file was written): a
   // run that starts on another group (delete_atoms renumbers the IDs) finds the
@@ -115,7 +116,6 @@ class FixMembrane3d : public Fix {
   bool centres_placed = false; // output[VOLUME] is this step's
 
   void evaluate_inputs();
-  void forget_membrane();
   void detect();
   void wear_types(const GatheredSpheres &g);
   void place_and_apply();

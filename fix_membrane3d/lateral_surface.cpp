@@ -156,6 +156,17 @@ MembraneTopology topology_of(const Boundary &boundary, const Mirrored &m, std::s
                              count_text(n_spheres, "sphere", "spheres") +
                              " from the outside (are they a packing? tolerance " +
                              number_text(tolerance) + ")");
+  // a membrane that leaves most spheres outside wraps no sample: a shell one sphere
+  // thick whose ends are open to the flood, spheres scattered beyond the tolerance
+  const auto outside = static_cast<std::size_t>(
+      std::count(boundary.side.begin(), boundary.side.begin() + n_spheres, Side::outside));
+  if (2 * outside > n_spheres)
+    throw std::runtime_error("only " + std::to_string(n_spheres - outside) + " of the " +
+                             count_text(n_spheres, "sphere", "spheres") +
+                             " lie inside the membrane or on it (" + std::to_string(outside) +
+                             " outside): the group is no packing between the platens (a shell "
+                             "one sphere thick, open to the outside? tolerance " +
+                             number_text(tolerance) + ")");
   MembraneTopology t;
   for (const auto &f : boundary.facets) {
     std::array<MembraneVertex, 3> facet;
@@ -267,7 +278,7 @@ std::vector<Eigen::Vector3d> offsets_of_checked(const MembraneTopology &topology
   std::vector<Eigen::Vector3d> offset(spheres.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (sums[i].b.isZero(0)) continue;
-    // at most a box corner's sqrt 3 r from the centre (outer_face_offset.h)
+    // at most 2 r from the centre (outer_face_offset.h)
     Eigen::Vector3d o = least_squares_offset(sums[i]) * spheres[i].r;
     // Never past a platen plane: the vertex's image would come inside, and the facets
     // of images only, beyond the platen, are not part of the membrane (it would open).

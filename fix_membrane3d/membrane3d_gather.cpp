@@ -69,7 +69,7 @@ void gather_group(LAMMPS *lmp, int groupbit, GatheredSpheres &out)
   share(lmp, send, out);
 }
 
-void gather_tags(LAMMPS *lmp, int groupbit, const std::vector<int> &tags, GatheredSpheres &out)
+std::size_t gather_tags(LAMMPS *lmp, int groupbit, const std::vector<int> &tags, GatheredSpheres &out)
 {
   Atom *atom = lmp->atom;
   std::vector<double> send;
@@ -80,4 +80,5 @@ void gather_tags(LAMMPS *lmp, int groupbit, const std::vector<int> &tags, Gather
       pack(atom, i, send);
   }
   share(lmp, send, out);
+  return out.tags.size();
 }

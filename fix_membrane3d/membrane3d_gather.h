@@ -22,9 +22,9 @@ double mean_diameter(const GatheredSpheres &g);
 // Every atom of the group.
 void gather_group(LAMMPS_NS::LAMMPS *lmp, int groupbit, GatheredSpheres &out);
 
-// The atoms of the group with these IDs (ascending): the caller compares the count
-// (an atom lost, or no longer in the group).
-void gather_tags(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<int> &tags,
+// The atoms of the group with these IDs (ascending), and their count: the caller
+// compares it (an atom lost, or no longer in the group).
+std::size_t gather_tags(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<int> &tags,
                  GatheredSpheres &out);
 
 #endif

@@ -2,11 +2,13 @@
 
 #include "restart_record.h"
 
+#include <cmath>
+
 namespace membrane3d {
 
 namespace {
 const double MAGIC = 3.0e7 + 3;  // fix membrane3d's records, not membrane2d's
-const int VERSION = 4; // 2: the detection's spheres; 3: the decided step; 4: the checksum
+const int VERSION = 4; // 2: the detection's spheres; 3: the decided step; 4: the platens, the checksum
 } // namespace
 
 std::vector<double> write_record(const Membrane3dState &s) {
@@ -39,6 +41,8 @@ std::vector<double> write_record(const Membrane3dState &s) {
   }
   w.put(s.decided_step);
   // two exact halves: a double holds 53 bits
+  w.put(s.detected_platens.lo);
+  w.put(s.detected_platens.hi);
   w.put(s.has_checksum ? 1.0 : 0.0);
   w.put(static_cast<double>(s.checksum >> 32));
   w.put(static_cast<double>(s.checksum & 0xffffffffu));
@@ -86,7 +90,11 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
     }
   }
   if (r.version() >= 3) in.decided_step = r.get();
+  // before version 4 the platens of the detection are unknown: never taken as moved
+  in.detected_platens = {std::nan(""), std::nan("")};
   if (r.version() >= 4) {
+    in.detected_platens.lo = r.get();
+    in.detected_platens.hi = r.get();
     in.has_checksum = r.get() != 0.0;
     const auto hi = static_cast<std::uint64_t>(r.get()), lo = static_cast<std::uint64_t>(r.get());
     in.checksum = (hi << 32) | lo;

@@ -31,6 +31,7 @@ struct Membrane3dState {
   double window_steps = 0, window_detections = 0, unwatched_until = -1; // DenseDetections
   // the group when the record was written (version 4): a read_restart followed by a
   // delete_atoms that renumbered it must not keep the membrane by atom ID
+  Platens detected_platens{0, 0}; // where the last detection found them (version 4)
   bool has_checksum = false;
   std::uint64_t checksum = 0;
 };

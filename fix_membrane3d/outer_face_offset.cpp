@@ -18,16 +18,20 @@ constexpr double kUnconstrained = 1e-3;
 // (a well-conditioned M, every eigenvalue above kUnconstrained of the largest, has
 // det above 3.7e-8 trace^3)
 constexpr double kRoundOffDet = 1e-9;
-// The farthest a vertex may lie from its sphere's centre, in radii: the corner of a
-// box, where three faces at right angles meet (sqrt 3), with a margin for a jittered
-// corner. Facets whose normals span a narrow fan (a large sphere beside a column of
-// small ones) constrain a direction so weakly that the solution runs out along it: a
-// vertex 2 r from the centre (3.2 r unbounded), a fin out of the sample.
-constexpr double kMostOffset = 1.7320508075688772 * 1.01;
+// The farthest a vertex may lie from its sphere's centre, in radii: the vertical edge
+// of a prism whose corner is 60 degrees (a triangle's; a box's corner is sqrt 3). A
+// longer offset is shortened to it.
+constexpr double kMostOffset = 2.0;
+// Beyond this the least squares have run out along a direction the facets hardly
+// constrain (a fin: 3.2 r for a large sphere beside a column of small ones, whose
+// facets' normals span a narrow fan): the poorly constrained directions are left out
+// first. Well above the sharpest corners of a packing (2 r and a little for a
+// tetrahedron's under a platen, which are only shortened).
+constexpr double kFin = 2.5;
 // A direction whose eigenvalue of the normals' matrix is below this fraction of the
-// largest is poorly constrained: where the offset is too long it is left out there
-// (the 20 mm ball beside 1 mm spheres: 3 %; the apex of a cone of three facets at 63
-// degrees from its axis, which is only shortened: 50 %).
+// largest is poorly constrained: where the offset is a fin it is left out there (the
+// 20 mm ball beside 1 mm spheres: 3 %; the apex of a cone of three facets at 80 degrees
+// from its axis: 6 %, at 63 degrees: 50 %, only shortened).
 constexpr double kPoorlyConstrained = 0.1;
 
 // The eigenvalues of a symmetric positive semi-definite 3 x 3 matrix in closed form
@@ -117,8 +121,8 @@ Eigen::Vector3d unbounded_offset(const NormalSums &sums)
   return Cofactors(r).solve(sums.b - v.dot(sums.b) * v);
 }
 
-// The offset within kMostOffset: beyond it, the poorly constrained directions are
-// left out one by one, weakest first, and what is still beyond is shortened to it.
+// The offset within kMostOffset: a fin (beyond kFin) loses its poorly constrained
+// directions one by one, weakest first; what is still beyond kMostOffset is shortened.
 Eigen::Vector3d least_squares_offset(const NormalSums &sums)
 {
   const Eigen::Vector3d o = unbounded_offset(sums);
@@ -128,7 +132,7 @@ Eigen::Vector3d least_squares_offset(const NormalSums &sums)
   const Eigen::Vector3d lambda = eigen.eigenvalues();
   const Eigen::Matrix3d v = eigen.eigenvectors();
   Eigen::Vector3d out = o;
-  for (int weak = 0; weak < 2 && out.norm() > kMostOffset &&
+  for (int weak = 0; weak < 2 && out.norm() > kFin &&
                      lambda[weak] < kPoorlyConstrained * lambda[2];
        ++weak) {
     out.setZero();

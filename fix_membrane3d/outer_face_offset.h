@@ -40,10 +40,11 @@ struct NormalSums {
 
 // The offset o (in radii) from one sphere's sums: M o = b solved where M constrains it
 // (an eigenvalue above 1e-3 of the largest); along a flat face's tangent plane or a
-// straight edge's direction o has no component. |o| is at most that of a box's corner,
-// sqrt 3 (with a 1 % margin): beyond it the poorly constrained directions (eigenvalue
-// below 10 % of the largest) are left out, weakest first (a large sphere beside small
-// ones, whose facets' normals span a narrow fan), and what is still beyond is shortened. Finite
+// straight edge's direction o has no component. |o| is at most 2 (a triangular
+// prism's 60-degree edge; a box's corner is sqrt 3): a fin (beyond 2.5, as for a large
+// sphere beside small ones, whose facets' normals span a narrow fan) loses its poorly
+// constrained directions (eigenvalue below 10 % of the largest), weakest first, and
+// what is still beyond 2 is shortened to 2. Finite
 // for the sums of one or more facets of positive area (a sphere on no facet gets no
 // offset: the caller's case).
 Eigen::Vector3d least_squares_offset(const NormalSums &sums);

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <vector>
 
 namespace membrane3d {
@@ -16,6 +17,13 @@ namespace membrane3d {
 struct Platens {
   double lo, hi; // z of the lower and upper platen
 };
+
+// Whether a platen of `now` is more than `tolerance` from where it was `then` (NaN:
+// unknown, not moved): the links of the spheres with their images can have changed.
+inline bool moved_apart(const Platens &now, const Platens &then, double tolerance)
+{
+  return std::abs(now.lo - then.lo) > tolerance || std::abs(now.hi - then.hi) > tolerance;
+}
 
 // x, or its mirror image in the lower (image -1) or upper (+1) platen (inline: at
 // every facet's corners every step).

@@ -141,6 +141,21 @@ TEST(MembraneVtk, TheCollectionListsTheFramesInOrder)
 }
 
 // Two fixes must not write one file however its name is spelled.
+// After a reset_timestep the later run writes frames 0, 5, 10 again over the files of
+// the earlier one: the collection lists each once (it listed 0, 5, 10, 0, 5, 10).
+TEST(MembraneVtk, AStepGoingBackDropsTheLaterFrames)
+{
+  vtk_series::Series series;
+  series.name("series_back_test");
+  ASSERT_EQ(series.start(0), "");
+  for (long long step : {0, 5, 10, 0, 5}) ASSERT_EQ(series.add(step, "frame"), "");
+  EXPECT_EQ(vtk_series::pvd_frames(vtk_series::read_file(series.pvd())),
+            (vtk_series::Frames{{0, "series_back_test_0.vtp"}, {5, "series_back_test_5.vtp"}}));
+  for (const char *f : {"series_back_test.pvd", "series_back_test_0.vtp", "series_back_test_5.vtp",
+                        "series_back_test_10.vtp"})
+    std::remove(f);
+}
+
 TEST(MembraneVtk, OneFileHoweverItIsNamed)
 {
   const std::string here = std::filesystem::current_path().string();

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using membrane3d::Membrane3dState;
 using membrane3d::Side;
 
@@ -59,7 +61,7 @@ TEST(Membrane3dRecord, RoundTrip) {
 // A record of version 1 (before every auto: no schedule, no spheres) is read.
 TEST(Membrane3dRecord, VersionOneIsRead) {
   auto rec = membrane3d::write_record(sample_state());
-  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5 + 1 + 3)); // the version-2, -3 and -4 tails
+  rec.resize(rec.size() - (3 + 2 + 1 + 2 * 5 + 1 + 5)); // the version-2, -3 and -4 tails
   rec[1] = 1;
   rec[2] = static_cast<double>(rec.size());
   Membrane3dState back;
@@ -73,7 +75,7 @@ TEST(Membrane3dRecord, VersionOneIsRead) {
 // A record of version 2 (before the decided step) is read: no step decided yet.
 TEST(Membrane3dRecord, VersionTwoIsRead) {
   auto rec = membrane3d::write_record(sample_state());
-  rec.resize(rec.size() - 1 - 3); // the version-3 and -4 tails
+  rec.resize(rec.size() - 1 - 5); // the version-3 and -4 tails
   rec[1] = 2;
   rec[2] = static_cast<double>(rec.size());
   Membrane3dState back;
@@ -86,13 +88,14 @@ TEST(Membrane3dRecord, VersionTwoIsRead) {
 // membrane is kept as in that version.
 TEST(Membrane3dRecord, VersionThreeIsRead) {
   auto rec = membrane3d::write_record(sample_state());
-  rec.resize(rec.size() - 3); // the version-4 tail
+  rec.resize(rec.size() - 5); // the version-4 tail
   rec[1] = 3;
   rec[2] = static_cast<double>(rec.size());
   Membrane3dState back;
   ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
   EXPECT_EQ(back.decided_step, 30);
   EXPECT_FALSE(back.has_checksum);
+  EXPECT_TRUE(std::isnan(back.detected_platens.hi)); // unknown: never taken as moved
 }
 
 // All 64 bits of the checksum come back (a double holds 53: two halves).
@@ -100,11 +103,14 @@ TEST(Membrane3dRecord, ChecksumRoundTrip) {
   Membrane3dState s = sample_state();
   s.has_checksum = true;
   s.checksum = 0xfedcba9876543211ull;
+  s.detected_platens = {-5e-4, 4.5e-3};
   const auto rec = membrane3d::write_record(s);
   Membrane3dState back;
   ASSERT_EQ(membrane3d::read_record(rec.data(), rec.size(), back), "");
   EXPECT_TRUE(back.has_checksum);
   EXPECT_EQ(back.checksum, 0xfedcba9876543211ull);
+  EXPECT_EQ(back.detected_platens.lo, -5e-4);
+  EXPECT_EQ(back.detected_platens.hi, 4.5e-3);
 }
 
 TEST(Membrane3dRecord, CutOrCorruptIsRefused) {

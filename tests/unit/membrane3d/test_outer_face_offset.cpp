@@ -76,11 +76,11 @@ TEST(OuterFaceOffset, NearlyFlatFacesAreTheirNormal)
 }
 
 // The apex of a cone of three facets whose normals are at angle t from its axis z asks
-// for o = z / cos t: past a box's corner (sqrt 3, +1 %) it is not taken. At t = 80
-// degrees the axis is poorly constrained (eigenvalue 3 cos^2 t = 0.09 against
-// 1.5 sin^2 t = 1.45, 6 %): no offset along it, and none across by symmetry. At
-// t = 63.4 degrees (cos t = 1 / sqrt 5, ratio 50 %) the axis is well constrained: the
-// offset sqrt 5 along it is shortened to the bound.
+// for o = z / cos t: past 2 it is not taken. At t = 80 degrees (5.76 asked) the axis is
+// poorly constrained (eigenvalue 3 cos^2 t = 0.09 against 1.5 sin^2 t = 1.45, 6 %): no
+// offset along it, and none across by symmetry. At t = 63.4 degrees (cos t = 1 / sqrt 5,
+// ratio 50 %) the axis is well constrained: the offset sqrt 5 along it is shortened to
+// 2. The vertical edge of a triangular prism (normals 120 degrees apart) is 2 exactly.
 TEST(OuterFaceOffset, ASharpApexGetsNoFin)
 {
   const auto cone = [](double t) {
@@ -92,8 +92,11 @@ TEST(OuterFaceOffset, ASharpApexGetsNoFin)
     return s;
   };
   expect_near(least_squares_offset(cone(80 * M_PI / 180)), Vector3d::Zero(), 1e-12);
-  expect_near(least_squares_offset(cone(std::acos(1 / std::sqrt(5.0)))),
-              Vector3d(0, 0, std::sqrt(3.0) * 1.01), 1e-12);
+  expect_near(least_squares_offset(cone(std::acos(1 / std::sqrt(5.0)))), Vector3d(0, 0, 2),
+              1e-12);
+  const double c = std::cos(2 * M_PI / 3), s = std::sin(2 * M_PI / 3);
+  expect_near(least_squares_offset(sums_of({Vector3d(1, 0, 0), Vector3d(c, s, 0)})),
+              Vector3d(1, (1 - c) / s, 0), 1e-12); // |o| = 2
   // at 50 degrees 1 / cos t = 1.556 is within the bound: the outer-face solution
   expect_near(least_squares_offset(cone(50 * M_PI / 180)),
               Vector3d(0, 0, 1 / std::cos(50 * M_PI / 180)), 1e-12);
@@ -111,7 +114,6 @@ TEST(OuterFaceOffset, ALargeSphereBesideSmallOnesStaysOnIt)
          3.658445861782775e-05,  0,                      9.9611746295303949e-06};
   s.b = Vector3d(-7.0000000000000007e-06, 3.6750000000000012e-05, 0);
   const Vector3d o = least_squares_offset(s);
-  EXPECT_LE(o.norm(), std::sqrt(3.0) * 1.01);
   EXPECT_NEAR(o.norm(), 1.0, 0.02);
   EXPECT_GT(o.y(), 0.97);
   EXPECT_NEAR(o.z(), 0, 1e-12);

@@ -71,7 +71,7 @@ struct Atoms {
   std::vector<int> mask;
   AtomScan scan(double dt, const int *tag = nullptr) const
   {
-    return scan_atoms(r.size(), x.data(), v.data(), f.data(), r.data(), mask.data(), 1, dt, tag);
+    return scan_atoms(r.size(), x.data(), v.data(), f.data(), r.data(), mask.data(), 1, dt, nullptr, tag);
   }
 };
 
