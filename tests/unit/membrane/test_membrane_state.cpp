@@ -320,3 +320,19 @@ TEST(MembraneState, ADroppedWatchMakesTheNextWatchedStepDetect)
   build_watch_list(chains, true, list); // no relation disks left to gather
   EXPECT_TRUE(list.empty());
 }
+
+TEST(MembraneState, PlatensMovedBeyondTheLimitSinceTheDetection)
+{
+  RunState run;
+  run.ylo_detected = -0.001;
+  run.yhi_detected = 0.006196;
+  run.tolerance = 4e-5; // 0.02 D50 of 2 mm
+  EXPECT_DOUBLE_EQ(platen_move_limit(run, 0.002), 4e-5);
+  EXPECT_FALSE(platens_moved(run, Platens{-0.001, 0.006196}, 4e-5));
+  EXPECT_FALSE(platens_moved(run, Platens{-0.00103, 0.006196}, 4e-5)); // 0.03 mm: within
+  EXPECT_TRUE(platens_moved(run, Platens{-0.001, 0.007096}, 4e-5));   // 0.9 mm up
+  EXPECT_TRUE(platens_moved(run, Platens{-0.001, 0.005896}, 4e-5));   // 0.3 mm down
+  EXPECT_TRUE(platens_moved(run, Platens{-0.00095, 0.006196}, 4e-5)); // ylo 0.05 mm up
+  run.tolerance = 0.0; // tolerance 0: at least 0.01 D50
+  EXPECT_DOUBLE_EQ(platen_move_limit(run, 0.002), 2e-5);
+}
