@@ -300,6 +300,19 @@ TEST(MembraneState, ADenseScheduleOfItsOwn)
   EXPECT_FALSE(dense.unwatched(step + 2000));
 }
 
+// reset_timestep 0 (or a restart of an earlier step) after a dense window closed at
+// step 1 000 000: the steps of the new count are watched again, not the next 10^6
+TEST(MembraneState, AStepCounterSetBackEndsTheUnwatchedRun)
+{
+  DenseDetections dense;
+  for (long long step = 1000000 - 99; step <= 1000000; step++) dense.count_watched(step, true);
+  EXPECT_EQ(dense.unwatched_until, 1000000 + UNWATCHED_STEPS);
+  EXPECT_TRUE(dense.unwatched(1000001));
+  EXPECT_FALSE(dense.unwatched(0));
+  EXPECT_FALSE(dense.unwatched(1));
+  EXPECT_FALSE(dense.unwatched(1000000 - 1)); // one step back: UNWATCHED_STEPS + 1 ahead
+}
+
 TEST(MembraneState, ADroppedWatchMakesTheNextWatchedStepDetect)
 {
   SideChain chains[2];
