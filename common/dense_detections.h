@@ -27,7 +27,13 @@ struct DenseDetections {
   long long window_steps = 0, window_detections = 0;
   long long unwatched_until = -1;
 
-  bool unwatched(long long step) const { return step < unwatched_until; }
+  // (a step counter set back, by reset_timestep or a restart of an earlier step, ends
+  // the unwatched run: it never lasts more than `unwatched_steps` from `step`; before,
+  // reset_timestep 0 after a dense window at step 10^6 left 10^6 steps unwatched)
+  bool unwatched(long long step) const
+  {
+    return step < unwatched_until && unwatched_until - step <= unwatched_steps;
+  }
 
   // after a watched step decided whether to detect: counts it in the window; true
   // when the window closes dense (this detection and the next UNWATCHED_STEPS - 1

@@ -177,9 +177,11 @@ void FixMembrane2d::setup_pre_force(int vflag)
   if (kept) {
     gather_watched();
     atoms.apply(chains, sides);
-    return;
+    if (!platens_moved(run, Platens{ylo, yhi}, platen_move_limit(run, d50))) return;
+    run.force_detection = true; // other platens (a restart, a jump): the kept chains the fallback
+  } else {
+    forget_state();
   }
-  forget_state();
   pre_force(vflag);
 }
 
@@ -216,8 +218,10 @@ void FixMembrane2d::pre_force(int)
   evaluate_platens();
   const bigint step = update->ntimestep;
   const bool unwatched = detect_auto() && unwatched_step(run, step);
-  bool detect =
-      run.force_detection || unwatched || (!detect_auto() && step % definition.detect_every == 0);
+  bool detect = run.force_detection || unwatched ||
+                (!detect_auto() && (step % definition.detect_every == 0 ||
+                                    platens_moved(run, Platens{ylo, yhi},
+                                                  platen_move_limit(run, d50))));
   if (!detect) {
     gather_watched();
     detect =

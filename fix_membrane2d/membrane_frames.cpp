@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include <unistd.h>
+
 #include "comm.h"
 #include "error.h"
 #include "update.h"
@@ -49,6 +51,7 @@ void MembraneFrames::read(const std::string &key, StyleArgs &args, const char *c
     } else {
       if (polyline_) std::fclose(polyline_);
       polyline_ = std::fopen(file.c_str(), "w");
+      polyline_frames_.clear();
       if (!polyline_) why = std::strerror(errno);
     }
     std::snprintf(reason, sizeof(reason), "%s", why.c_str());
@@ -72,6 +75,16 @@ void MembraneFrames::write(LAMMPS_NS::bigint step, const membrane::SideChain (&c
 {
   if (comm->me != 0) return;
   if (polyline_ && step % polyline_every_ == 0) {
+    // each step once: a step written again replaces its frame and the later ones
+    const long end = std::ftell(polyline_);
+    const long start = membrane::polyline_frame_start(polyline_frames_, step, end);
+    if (start < end && (std::fflush(polyline_) != 0 || ftruncate(fileno(polyline_), start) != 0 ||
+                        std::fseek(polyline_, start, SEEK_SET) != 0))
+      error->one(FLERR, keyword_message(prefix_, "polyline", polyline_file_,
+                                        std::string("cannot cut the file to rewrite step ") +
+                                            std::to_string(step) + " (" + std::strerror(errno) +
+                                            "); check that it is a regular file")
+                            .c_str());
     std::fprintf(polyline_, "ITEM: TIMESTEP\n" BIGINT_FORMAT "\n", step);
     for (int k = membrane::LEFT; k <= membrane::RIGHT; k++)
       if (chains[k].active)

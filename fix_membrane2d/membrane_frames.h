@@ -13,6 +13,7 @@
 #include "pointers.h"
 
 #include "membrane_gather.h"
+#include "membrane_output.h"
 #include "membrane_state.h"
 #include "vtk_series.h"
 
@@ -43,6 +44,7 @@ class MembraneFrames : protected LAMMPS_NS::Pointers {
   LAMMPS_NS::bigint polyline_every_ = 0, vtk_every_ = 0;
   std::FILE *polyline_ = nullptr;
   std::string polyline_file_;
+  std::vector<membrane::PolylineFrame> polyline_frames_; // steps written, where each starts
   vtk_series::Series vtk_;
 };
 

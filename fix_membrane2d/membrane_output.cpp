@@ -135,6 +135,16 @@ std::string traffic_summary(const std::string &id, double step_bytes, double det
   return buf;
 }
 
+long polyline_frame_start(std::vector<PolylineFrame> &frames, long long step, long end)
+{
+  const auto first = std::find_if(frames.begin(), frames.end(),
+                                  [step](const PolylineFrame &f) { return f.step >= step; });
+  const long start = first == frames.end() ? end : first->offset;
+  frames.erase(first, frames.end());
+  frames.push_back({step, start});
+  return start;
+}
+
 void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyline,
                          const std::vector<Disk> &chain, const std::vector<Eigen::Vector2d> &forces)
 {

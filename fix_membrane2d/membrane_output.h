@@ -73,6 +73,18 @@ std::string traffic_summary(const std::string &id, double step_bytes, double det
                             long long steps, long long detections, long long full_passes,
                             double fix_seconds, double search_seconds);
 
+// The polyline file lists each step once, as the vtk collection does: before the
+// frame of `step` is written, the frames at or after that step are dropped (the
+// first step of a continued run, which the last one wrote; a step counter set
+// back by reset_timestep or an earlier restart). `frames` holds the steps written
+// and where each starts; `end` is the file's length. Returns where the new frame
+// starts (cut the file there when it is before `end`) and records it.
+struct PolylineFrame {
+  long long step;
+  long offset;
+};
+long polyline_frame_start(std::vector<PolylineFrame> &frames, long long step, long end);
+
 // One side's part of a polyline-file frame (doc/fix_membrane2d.md, "polyline").
 void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyline,
                          const std::vector<Disk> &chain,

@@ -61,6 +61,17 @@ bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens det
   return false;
 }
 
+bool platens_moved(const RunState &run, Platens now, double limit)
+{
+  return std::fabs(now.ylo - run.ylo_detected) > limit ||
+         std::fabs(now.yhi - run.yhi_detected) > limit;
+}
+
+double platen_move_limit(const RunState &run, double d50)
+{
+  return std::max(run.tolerance, WATCH_BUDGET * d50);
+}
+
 bool unwatched_step(const RunState &run, long long step)
 {
   return run.dense.unwatched(step);

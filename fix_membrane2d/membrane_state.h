@@ -172,6 +172,14 @@ struct RunState {
   DenseDetections dense; // every auto: when the watch is not worth building
 };
 
+// every N, and the setup of a run that keeps the chains: whether a platen moved
+// more than `limit` since the last detection (then the chains are searched anew,
+// the kept ones the fallback; a platen moved beyond the gap tolerance can have
+// made or broken the contacts with it)
+bool platens_moved(const RunState &run, Platens now, double limit);
+// the `limit` of platens_moved: the tolerance, at least WATCH_BUDGET x D50 (a
+// tolerance of 0 would make every N detect at every step of a moving platen)
+double platen_move_limit(const RunState &run, double d50);
 // every auto: whether `step` detects without a watch (RunState::unwatched_until)
 bool unwatched_step(const RunState &run, long long step);
 // every auto, after a watched step decided whether to detect: counts it in

@@ -165,3 +165,26 @@ TEST(MembraneVtk, OneFileHoweverItIsNamed)
   EXPECT_FALSE(vtk_series::same_file("a.pvd", "b.pvd"));
   EXPECT_FALSE(vtk_series::same_file("", ""));  // no file: no clash
 }
+
+TEST(MembraneOutput, PolylineFramesEachStepOnce)
+{
+  std::vector<PolylineFrame> frames;
+  EXPECT_EQ(polyline_frame_start(frames, 0, 0), 0);
+  EXPECT_EQ(polyline_frame_start(frames, 5, 100), 100);
+  EXPECT_EQ(polyline_frame_start(frames, 10, 200), 200);
+  // a continued run starts at step 10 again: its frame replaces the last one
+  EXPECT_EQ(polyline_frame_start(frames, 10, 300), 200);
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_EQ(polyline_frame_start(frames, 15, 300), 300);
+  // reset_timestep 0: every frame goes, the file starts again
+  EXPECT_EQ(polyline_frame_start(frames, 0, 400), 0);
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].step, 0);
+  EXPECT_EQ(frames[0].offset, 0);
+  // a restart of step 7 read into frames 0, 5, 10: 10 goes, 5 stays
+  EXPECT_EQ(polyline_frame_start(frames, 5, 100), 100);
+  EXPECT_EQ(polyline_frame_start(frames, 10, 200), 200);
+  EXPECT_EQ(polyline_frame_start(frames, 7, 300), 200);
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_EQ(frames[2].step, 7);
+}

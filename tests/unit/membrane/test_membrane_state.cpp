@@ -300,6 +300,19 @@ TEST(MembraneState, ADenseScheduleOfItsOwn)
   EXPECT_FALSE(dense.unwatched(step + 2000));
 }
 
+// reset_timestep 0 (or a restart of an earlier step) after a dense window closed at
+// step 1 000 000: the steps of the new count are watched again, not the next 10^6
+TEST(MembraneState, AStepCounterSetBackEndsTheUnwatchedRun)
+{
+  DenseDetections dense;
+  for (long long step = 1000000 - 99; step <= 1000000; step++) dense.count_watched(step, true);
+  EXPECT_EQ(dense.unwatched_until, 1000000 + UNWATCHED_STEPS);
+  EXPECT_TRUE(dense.unwatched(1000001));
+  EXPECT_FALSE(dense.unwatched(0));
+  EXPECT_FALSE(dense.unwatched(1));
+  EXPECT_FALSE(dense.unwatched(1000000 - 1)); // one step back: UNWATCHED_STEPS + 1 ahead
+}
+
 TEST(MembraneState, ADroppedWatchMakesTheNextWatchedStepDetect)
 {
   SideChain chains[2];
@@ -319,4 +332,20 @@ TEST(MembraneState, ADroppedWatchMakesTheNextWatchedStepDetect)
   std::vector<WatchEntry> list;
   build_watch_list(chains, true, list); // no relation disks left to gather
   EXPECT_TRUE(list.empty());
+}
+
+TEST(MembraneState, PlatensMovedBeyondTheLimitSinceTheDetection)
+{
+  RunState run;
+  run.ylo_detected = -0.001;
+  run.yhi_detected = 0.006196;
+  run.tolerance = 4e-5; // 0.02 D50 of 2 mm
+  EXPECT_DOUBLE_EQ(platen_move_limit(run, 0.002), 4e-5);
+  EXPECT_FALSE(platens_moved(run, Platens{-0.001, 0.006196}, 4e-5));
+  EXPECT_FALSE(platens_moved(run, Platens{-0.00103, 0.006196}, 4e-5)); // 0.03 mm: within
+  EXPECT_TRUE(platens_moved(run, Platens{-0.001, 0.007096}, 4e-5));   // 0.9 mm up
+  EXPECT_TRUE(platens_moved(run, Platens{-0.001, 0.005896}, 4e-5));   // 0.3 mm down
+  EXPECT_TRUE(platens_moved(run, Platens{-0.00095, 0.006196}, 4e-5)); // ylo 0.05 mm up
+  run.tolerance = 0.0; // tolerance 0: at least 0.01 D50
+  EXPECT_DOUBLE_EQ(platen_move_limit(run, 0.002), 2e-5);
 }
