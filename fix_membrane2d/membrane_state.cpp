@@ -1,5 +1,7 @@
 #include "membrane_state.h"
 
+#include "platen_motion.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -63,8 +65,7 @@ bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens det
 
 bool platens_moved(const RunState &run, Platens now, double limit)
 {
-  return std::fabs(now.ylo - run.ylo_detected) > limit ||
-         std::fabs(now.yhi - run.yhi_detected) > limit;
+  return platens_moved_beyond(now.ylo, now.yhi, run.ylo_detected, run.yhi_detected, limit);
 }
 
 double platen_move_limit(const RunState &run, double d50)

@@ -6,10 +6,10 @@
 #define LIGGGHTS_MEMBRANE_PLATEN_IMAGES_H
 
 #include "exterior_flood.h"
+#include "platen_motion.h"
 
 #include <Eigen/Core>
 
-#include <cmath>
 #include <vector>
 
 namespace membrane3d {
@@ -22,7 +22,7 @@ struct Platens {
 // unknown, not moved): the links of the spheres with their images can have changed.
 inline bool moved_apart(const Platens &now, const Platens &then, double tolerance)
 {
-  return std::abs(now.lo - then.lo) > tolerance || std::abs(now.hi - then.hi) > tolerance;
+  return platens_moved_beyond(now.lo, now.hi, then.lo, then.hi, tolerance);
 }
 
 // x, or its mirror image in the lower (image -1) or upper (+1) platen (inline: at
