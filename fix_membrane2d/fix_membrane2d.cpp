@@ -259,7 +259,7 @@ void FixMembrane2d::detect_chains(bool watch_it)
   ChainResult results[2];
   for (int attempt = 0; attempt <= MAX_WIDENINGS && (pending[LEFT] || pending[RIGHT]); attempt++) {
     if (attempt > 0) {
-      width *= BAND_WIDENING;
+      width = widened_band(width, d50);
       run.counters.widenings++;
     }
     gather.bands(platens, width, active, sides);

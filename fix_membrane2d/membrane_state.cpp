@@ -63,6 +63,11 @@ bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens det
   return false;
 }
 
+double widened_band(double width, double d50)
+{
+  return std::min(width * BAND_WIDENING, MOST_SEARCH_WIDTH * d50);
+}
+
 bool platens_moved(const RunState &run, Platens now, double limit)
 {
   return platens_moved_beyond(now.ylo, now.yhi, run.ylo_detected, run.yhi_detected, limit);

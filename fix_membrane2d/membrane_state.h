@@ -28,6 +28,9 @@ constexpr double TOLERANCE_MAX = 0.25;     // x D50: wider ones bridge real gaps
 // a failed search is repeated with the band widened by this factor, at most this often
 constexpr double BAND_WIDENING = 2.5;
 constexpr int MAX_WIDENINGS = 2;
+// ... up to this many D50 (wider than any sample: every disk is in the band). While a
+// chain stays lost each step widened it again: after ~390 failed steps it was inf.
+constexpr double MOST_SEARCH_WIDTH = 1e5;
 // every auto: relations within this many D50 of their threshold are watched
 // every step; the others may flip only after a band disk moved half as far
 constexpr double WATCH_BUDGET = 0.01;
@@ -171,6 +174,9 @@ struct RunState {
   bool warned_inertial = false, warned_chain_step = false;
   DenseDetections dense; // every auto: when the watch is not worth building
 };
+
+// A failed search's band: `width` widened by BAND_WIDENING, at most MOST_SEARCH_WIDTH D50.
+double widened_band(double width, double d50);
 
 // every N, and the setup of a run that keeps the chains: whether a platen moved
 // more than `limit` since the last detection (then the chains are searched anew,

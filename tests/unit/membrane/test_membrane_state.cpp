@@ -349,3 +349,15 @@ TEST(MembraneState, PlatensMovedBeyondTheLimitSinceTheDetection)
   run.tolerance = 0.0; // tolerance 0: at least 0.01 D50
   EXPECT_DOUBLE_EQ(platen_move_limit(run, 0.002), 2e-5);
 }
+
+// A failed search widens the band 2.5 x; while a chain stays lost it is widened again
+// at every step (6.25 x a step): it stops at MOST_SEARCH_WIDTH D50, where it was inf
+// after ~390 steps.
+TEST(MembraneState, AWidenedBandStaysFinite)
+{
+  const double d50 = 2e-3;
+  EXPECT_DOUBLE_EQ(widened_band(8e-3, d50), 2e-2);
+  double width = 8e-3;
+  for (int step = 0; step < 1000; step++) width = widened_band(widened_band(width, d50), d50);
+  EXPECT_DOUBLE_EQ(width, MOST_SEARCH_WIDTH * d50);
+}
