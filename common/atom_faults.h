@@ -7,6 +7,7 @@
 
 #include <mpi.h>
 
+#include <climits>
 #include <cmath>
 #include <string>
 
@@ -15,6 +16,7 @@
 #include "update.h"
 
 #include "number_text.h"
+#include "rank_choice.h"
 
 // True when a sphere of `dims` coordinates x and radius r cannot be used.
 inline bool atom_is_faulty(const double *x, int dims, double r)
@@ -60,23 +62,20 @@ inline std::string group_atom_fault(LAMMPS_NS::LAMMPS *lmp, int groupbit, int di
         (atom_is_faulty(atom->x[i], dims, atom->radius[i]) || atom_is_faulty(atom->v[i], dims, 1)) &&
         (mine < 0 || atom->tag[i] < atom->tag[mine]))
       mine = i;
-  // (tag, rank) of the lowest faulty ID: MPI_MINLOC over int pairs
-  int me = 0;
-  MPI_Comm_rank(lmp->world, &me);
-  struct {
-    int tag, rank;
-  } local{mine < 0 ? 2147483647 : atom->tag[mine], me}, lowest{0, 0};
-  MPI_Allreduce(&local, &lowest, 1, MPI_2INT, MPI_MINLOC, lmp->world);
-  if (lowest.tag == 2147483647) return "";
+  int any = mine >= 0 ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, lmp->world);
+  if (!any) return "";
   double record[7] = {0, 0, 0, 0, 0, 0, 0}; // x, v, r of that atom, from its rank
-  if (me == lowest.rank)
+  if (mine >= 0) {
     for (int d = 0; d < 3; d++) {
       record[d] = atom->x[mine][d];
       record[3 + d] = atom->v[mine][d];
-      record[6] = atom->radius[mine];
     }
-  MPI_Bcast(record, 7, MPI_DOUBLE, lowest.rank, lmp->world);
-  return atom_fault_text(lowest.tag, record, dims, record[6], lmp->update->ntimestep, record + 3);
+    record[6] = atom->radius[mine];
+  }
+  const int tag = rank_choice::name_first(lmp->world, mine >= 0 ? atom->tag[mine] : LLONG_MAX,
+                                          record, 7);
+  return atom_fault_text(tag, record, dims, record[6], lmp->update->ntimestep, record + 3);
 }
 
 #endif

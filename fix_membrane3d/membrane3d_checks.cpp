@@ -179,10 +179,10 @@ Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<
     net += f;
     magnitude += f.norm();
   }
-  const std::string step = std::to_string(lmp->update->ntimestep);
+  const auto step = [lmp] { return std::to_string(lmp->update->ntimestep); }; // errors only
   // loads that overflow (an absurd pressure) are the input's fault, not the membrane's
   if (!std::isfinite(magnitude) && std::isfinite(pressure))
-    lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads at step " + step +
+    lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads at step " + step() +
                             " are not finite: the pressure " + number_text(pressure) +
                             " times the facets' areas overflows; give the confining pressure in "
                             "the units of the box (force/area)")
@@ -191,7 +191,7 @@ Eigen::Vector3d check_closed(LAMMPS *lmp, const char *prefix, const std::vector<
   if (!(net.head<2>().norm() <= CLOSURE_ROUND_OFF * magnitude) || !std::isfinite(magnitude))
     lmp->error->all(FLERR, (std::string(prefix) + "the membrane's loads have a lateral net force of " +
                             number_text(net.head<2>().norm()) + " N (of " + number_text(magnitude) +
-                            " N in all) at step " + step +
+                            " N in all) at step " + step() +
                             (net.allFinite() ? ": the membrane is not closed" : ": a load is not finite") +
                             "; this is a fault of fix membrane3d; please report it with the input script")
                                .c_str());

@@ -268,7 +268,7 @@ double FixStabilityGuard::check_atoms(bool at_start)
   if (bad_size > 0) {
     double size[2] = {ib >= 0 ? atom->radius[ib] : 0.0,
                       ib >= 0 && atom->rmass_flag ? atom->rmass[ib] : 0.0};
-    const int first = stability::name_first(world, ib >= 0 ? atom->tag[ib] : LLONG_MAX, size, 2);
+    const int first = rank_choice::name_first(world, ib >= 0 ? atom->tag[ib] : LLONG_MAX, size, 2);
     fail(msg(stability::size_error(bad_size, update->ntimestep, first, size[0], size[1],
                                    atom->rmass_flag)));
   }
@@ -278,13 +278,13 @@ double FixStabilityGuard::check_atoms(bool at_start)
   if (nonfinite > 0) { // a non-finite position or velocity on any rank before a force
     const bool force_only = scan.first_kind == stability::NonFinite::Force;
     double kind = static_cast<double>(scan.first_kind);
-    const int first = stability::name_first(
+    const int first = rank_choice::name_first(
         world, in >= 0 ? (force_only ? 1LL << 32 : 0LL) + atom->tag[in] : LLONG_MAX, &kind, 1);
     fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio,
                                         static_cast<stability::NonFinite>(static_cast<int>(kind)),
                                         at_start)));
   }
-  const stability::ValueTag fastest = stability::max_over_ranks(
+  const rank_choice::ValueTag fastest = rank_choice::max_over_ranks(
       {scan.max_step_fraction, scan.argmax_step >= 0 ? atom->tag[scan.argmax_step] : 0}, world);
   const stability::StepVerdict verdict = stability::judge_step_fraction(fastest.value, move_limit);
   if (verdict != stability::StepVerdict::Within)
@@ -331,14 +331,14 @@ double FixStabilityGuard::check_overlaps()
     scan =
         stability::scan_overlaps(list->inum, list->ilist, list->numneigh, list->firstneigh,
                                  NEIGHMASK, atom->x, atom->radius, atom->mask, groupbit, atom->tag);
-  const stability::ValueTag worst =
-      stability::max_over_ranks({scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0}, world);
+  const rank_choice::ValueTag worst =
+      rank_choice::max_over_ranks({scan.max_fraction, scan.i >= 0 ? atom->tag[scan.i] : 0}, world);
   if (!stability::warn_once_now(worst.value, overlap_limit, warned_overlap)) return worst.value;
   // of the ranks with the largest overlap, the pair of the smallest tags
   double pair[2] = {scan.i >= 0 ? 1.0 * atom->tag[scan.i] : 0,
                     scan.j >= 0 ? 1.0 * atom->tag[scan.j] : 0};
   const bool mine = scan.i >= 0 && scan.max_fraction == worst.value;
-  stability::name_first(
+  rank_choice::name_first(
       world,
       mine ? stability::pair_key(static_cast<int>(pair[0]), static_cast<int>(pair[1])) : LLONG_MAX,
       pair, 2);

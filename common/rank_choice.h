@@ -1,11 +1,12 @@
-// Which rank's candidate a check of fix stability/guard names, the same on every
-// rank whatever the decomposition (collective; MPI only, no LIGGGHTS).
+// Which rank's candidate a message names (fix stability/guard's checks, the atom
+// faults of both membranes), the same on every rank whatever the decomposition
+// (collective; MPI only, no LIGGGHTS).
 #ifndef LIGGGHTS_MEMBRANE_RANK_CHOICE_H
 #define LIGGGHTS_MEMBRANE_RANK_CHOICE_H
 
 #include <mpi.h>
 
-namespace stability {
+namespace rank_choice {
 
 // a value and the atom ID it belongs to, for MPI_MAXLOC over the ranks
 struct ValueTag {
@@ -37,6 +38,6 @@ inline int name_first(MPI_Comm world, long long key, double *values_of_first, in
   return static_cast<int>(first & 0xffffffffLL);
 }
 
-} // namespace stability
+} // namespace rank_choice
 
 #endif
