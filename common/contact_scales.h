@@ -73,8 +73,8 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
     const double r = atom->radius[i];
     diameters.push_back(2.0 * r);
     if (atom->rmass_flag) sums[0] += atom->rmass[i];
-    sums[1] += dimension == 3 ? 4.0 / 3.0 * math_constants::PI * r * r * r
-                              : math_constants::PI * r * r;
+    sums[1] +=
+        dimension == 3 ? 4.0 / 3.0 * math_constants::PI * r * r * r : math_constants::PI * r * r;
   }
   allgather_doubles(world, diameters, all, counts, displs);
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);

@@ -44,8 +44,7 @@ class RestartRecordReader {
 
   // `n` bounds what may be read at `data` (UNKNOWN_LENGTH when unknown); formats
   // `oldest` to `version` are read (the caller asks version() what is there)
-  RestartRecordReader(const double *data, std::size_t n, double magic, int version,
-                      int oldest = -1)
+  RestartRecordReader(const double *data, std::size_t n, double magic, int version, int oldest = -1)
     : data_(data)
   {
     if (oldest < 0) oldest = version;
@@ -127,10 +126,9 @@ inline bool write_record_bytes(std::FILE *fp, const std::vector<double> &record)
 // magic, the version (`oldest` to `version`) and the length (at most
 // `max_length` doubles when the caller knows a bound), or says in error() why
 // the record cannot be read.
-inline RestartRecordReader read_restart_record(const char *raw, double magic, int version,
-                                               int oldest = -1,
-                                               std::size_t max_length =
-                                                   RestartRecordReader::UNKNOWN_LENGTH)
+inline RestartRecordReader
+read_restart_record(const char *raw, double magic, int version, int oldest = -1,
+                    std::size_t max_length = RestartRecordReader::UNKNOWN_LENGTH)
 {
   return RestartRecordReader(reinterpret_cast<const double *>(raw), max_length, magic, version,
                              oldest);
