@@ -146,6 +146,15 @@ bool has_normal(const Contact &c)
   return std::isfinite(c.nx) && std::isfinite(c.ny) && (c.nx != 0.0 || c.ny != 0.0);
 }
 
+// fmod is exact, and the identity for |angle| < 2 pi (atan2's range): skipped there
+double wrap_to_full_turn(double angle)
+{
+  double wrapped = std::fabs(angle) < TWO_PI ? angle : std::fmod(angle, TWO_PI);
+  if (wrapped < 0.0) wrapped += TWO_PI;
+  if (wrapped >= TWO_PI) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
+  return wrapped;
+}
+
 double bin_centre(int bin, int nbins)
 {
   return (bin + 0.5) * bin_width(nbins);
@@ -154,10 +163,7 @@ double bin_centre(int bin, int nbins)
 int angle_bin(double angle, int nbins)
 {
   if (!std::isfinite(angle) || nbins < 1) return -1;
-  // fmod is exact, and the identity for |angle| < 2 pi (atan2's range): skip it there
-  double wrapped = std::fabs(angle) < TWO_PI ? angle : std::fmod(angle, TWO_PI);
-  if (wrapped < 0.0) wrapped += TWO_PI;
-  if (wrapped >= TWO_PI) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
+  const double wrapped = wrap_to_full_turn(angle);
   const int bin = static_cast<int>(wrapped / bin_width(nbins));
   return bin < nbins ? bin : nbins - 1; // wrapped / width can round up to nbins
 }

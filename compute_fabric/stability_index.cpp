@@ -1,5 +1,6 @@
 #include "stability_index.h"
 
+#include "fabric_statistics.h"
 #include "particle_contacts.h"
 
 #include <algorithm>
@@ -13,15 +14,6 @@ namespace fabric {
 namespace {
 
 using math_constants::TWO_PI;
-
-// fmod is exact and slow; the fast paths below give its result bit for bit
-double wrap_to_full_turn(double angle)
-{
-  double wrapped = std::fabs(angle) < TWO_PI ? angle : std::fmod(angle, TWO_PI);
-  if (wrapped < 0.0) wrapped += TWO_PI;
-  if (wrapped >= TWO_PI) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
-  return wrapped;
-}
 
 double circular_distance(double alpha, double beta)
 {
