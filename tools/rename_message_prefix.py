@@ -28,6 +28,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_FILES = ("tests/adversarial/cases/*.cases", "tests/scripts/*.in", "tests/python/*.py",
                  "tests/examples/*.py", "tests/unit/*/*.cpp", "tests/unit/*/*.h")
+OWN_TEST = "test_rename_message_prefix.py"  # its fixtures keep the old form
 
 
 def parse_style(text):
@@ -167,7 +168,8 @@ def main():
     args = ap.parse_args()
     style = Style(args.style)
     files = args.files or sorted(f for pattern in DEFAULT_FILES
-                                 for f in glob.glob(os.path.join(ROOT, pattern)))
+                                 for f in glob.glob(os.path.join(ROOT, pattern))
+                                 if os.path.basename(f) != OWN_TEST)
     report = Report()
     touched = 0
     for path in files:
