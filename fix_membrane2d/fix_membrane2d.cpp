@@ -20,6 +20,7 @@
 #include "membrane2d_checks.h"
 #include "membrane_output.h"
 #include "membrane_record.h"
+#include "restart_envelope.h"
 #include "stability_checks.h"
 #include "style_args.h"
 #include "style_error.h"
@@ -319,14 +320,14 @@ void FixMembrane2d::write_restart(FILE *fp)
   types.restore_for_restart();
   membrane::RunState saved = run;
   saved.checksum = group_checksum();
-  write_record(fp, membrane::write_record(definition, saved, chains));
+  write_restart_record(lmp, fp, membrane::write_record(definition, saved, chains));
 }
 
 void FixMembrane2d::restart(char *raw)
 {
   bool same = false;
   const std::string why =
-      read_record(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double),
+      read_record(reinterpret_cast<const double *>(raw), RestartRecordReader::UNKNOWN_LENGTH,
                   definition, same, run, chains);
   if (!why.empty()) fail(restart_unreadable(id, why, !same));
   if (!same) {

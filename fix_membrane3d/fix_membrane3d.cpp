@@ -18,6 +18,7 @@
 
 #include "membrane3d_checks.h"
 #include "membrane3d_record.h"
+#include "restart_envelope.h"
 #include "membrane3d_skin.h"
 #include "membrane3d_tuning.h"
 #include "membrane3d_vtk.h"
@@ -240,14 +241,14 @@ void FixMembrane3d::write_restart(FILE *fp)
   state.has_checksum = true;
   state.checksum = group_checksum();
   if (shared.automatic()) automatic.save(state);
-  write_record(fp, membrane3d::write_record(state));
+  write_restart_record(lmp, fp, membrane3d::write_record(state));
 }
 
 void FixMembrane3d::restart(char *raw)
 {
   membrane3d::Membrane3dState state;
   const std::string why = membrane3d::read_record(reinterpret_cast<const double *>(raw),
-                                                  static_cast<size_t>(-1) / sizeof(double), state);
+                                                  RestartRecordReader::UNKNOWN_LENGTH, state);
   if (!why.empty())
     fail(std::string("cannot read fix ") + id + "'s record in the restart file: " + why +
          "; unfix it before write_restart, or define it anew after read_restart");

@@ -1,4 +1,5 @@
 #include "lateral_surface.h"
+#include "math_constants.h"
 #include "number_text.h"
 #include "outer_face_offset.h"
 
@@ -373,7 +374,7 @@ void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> 
     const Eigen::Vector2d inwards = axis - spheres[i].x.head<2>();
     const double distance = inwards.norm();
     if (distance == 0) continue;
-    const double push = p * M_PI * spheres[i].r * spheres[i].r / distance;
+    const double push = p * math_constants::PI * spheres[i].r * spheres[i].r / distance;
     load.at(i) += Eigen::Vector3d(push * inwards.x(), push * inwards.y(), 0);
   }
 }

@@ -1,4 +1,5 @@
 #include "outer_face_offset.h"
+#include "math_constants.h"
 
 #include <Eigen/Dense>
 
@@ -44,7 +45,7 @@ std::pair<double, double> eigenvalue_range(const Eigen::Matrix3d &m)
   if (p == 0) return {q, q};
   const double half_det = std::clamp((shifted / p).determinant() / 2, -1.0, 1.0);
   const double phi = std::acos(half_det) / 3;
-  return {q + 2 * p * std::cos(phi + 2 * M_PI / 3), q + 2 * p * std::cos(phi)};
+  return {q + 2 * p * std::cos(phi + math_constants::TWO_PI / 3), q + 2 * p * std::cos(phi)};
 }
 
 // M's cofactors (the inverse times det: M is symmetric, so is it), det and the sum of

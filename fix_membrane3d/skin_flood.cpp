@@ -1,4 +1,5 @@
 #include "skin_flood.h"
+#include "math_constants.h"
 
 #include "number_text.h"
 #include "power_flood.h"
@@ -299,12 +300,12 @@ std::vector<int> outermost_spheres(const std::vector<Sphere> &spheres, double di
     reach[i] = (spheres[i].x.head<2>() - axis).norm() + spheres[i].r;
     outer = std::max(outer, reach[i]);
   }
-  const long sectors = std::clamp(static_cast<long>(2 * M_PI * outer / diameter), 8L, 1L << 16);
+  const long sectors = std::clamp(static_cast<long>(math_constants::TWO_PI * outer / diameter), 8L, 1L << 16);
   std::vector<long> bin(spheres.size());
   std::unordered_map<long, double> farthest;
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const Eigen::Vector2d r = spheres[i].x.head<2>() - axis;
-    const double turn = (std::atan2(r.y(), r.x()) + M_PI) / (2 * M_PI); // 0 .. 1
+    const double turn = (std::atan2(r.y(), r.x()) + math_constants::PI) / (math_constants::TWO_PI); // 0 .. 1
     const long sector = std::min(static_cast<long>(turn * sectors), sectors - 1);
     bin[i] = static_cast<long>((spheres[i].x.z() - z_lo) / diameter) * sectors + sector;
     double &most = farthest.emplace(bin[i], reach[i]).first->second;

@@ -1,4 +1,5 @@
 #include "surface_loads.h"
+#include "math_constants.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -69,7 +70,7 @@ double lateral_volume(const Surface &surface) {
 }
 
 double equivalent_radius(double volume, double height) {
-  return std::sqrt(volume / (M_PI * height));
+  return std::sqrt(volume / (math_constants::PI * height));
 }
 
 } // namespace membrane3d

@@ -139,14 +139,6 @@ std::uint64_t MembraneFix::group_checksum() const
   return ::group_checksum(lmp, groupbit, traits.dimension);
 }
 
-void MembraneFix::write_record(FILE *fp, const std::vector<double> &record) const
-{
-  if (comm->me != 0) return;
-  const int size = static_cast<int>(record.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(record.data(), sizeof(double), record.size(), fp);
-}
-
 int MembraneFix::pack_restart(int i, double *buf)
 {
   types.packed(i); // called after LIGGGHTS packed atom i with its own type

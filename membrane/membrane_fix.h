@@ -87,8 +87,6 @@ class MembraneFix : public Fix {
   bool on_any_rank(bool mine) const;
   // order-free hash of the group's atoms (IDs, types, positions, radii): collective
   std::uint64_t group_checksum() const;
-  // the style's restart record, through the one envelope
-  void write_record(FILE *fp, const std::vector<double> &record) const;
   [[noreturn]] void fail(const std::string &text) const;
   void warn(const std::string &text) const;
 
