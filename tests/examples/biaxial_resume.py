@@ -25,8 +25,7 @@ import tempfile
 import numpy as np
 
 from example_run import Checks, ROOT, run
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from biaxial import readers, resume  # noqa: E402
+from liggghts_membrane import readers, resume
 
 PAPER = ["-var", "damping", "1", "-var", "feedforward", "0", "-var", "restartevery", "2000",
          "-var", "eatarget", "0.002", "-var", "ndump", "2000"]

@@ -16,9 +16,8 @@ import re
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_run import ROOT, Checks, run, table  # noqa: E402
-from triaxial_small import check_frames, vtk_frames  # noqa: E402
+from example_run import ROOT, Checks, run, table
+from triaxial_small import check_frames, vtk_frames
 
 EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
 P = 1e5

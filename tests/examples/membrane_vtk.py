@@ -25,8 +25,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 from example_run import ROOT, Checks, mpi_env
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from biaxial.vtk_files import point_array, points, read_polydata  # noqa: E402
+from liggghts_membrane.vtk_files import point_array, points, read_polydata
 
 PRESSURE, THICKNESS = 1e5, 1.0
 BLOCK = """variable a equal 0.002

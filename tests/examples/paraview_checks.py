@@ -15,8 +15,7 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 from example_run import EXAMPLE, ROOT
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from biaxial.vtk_files import point_array, points, read_polydata as read  # noqa: E402
+from liggghts_membrane.vtk_files import point_array, points, read_polydata as read
 
 TRIANGLES = {"wb": "bottom", "wt": "top", "wl": "left", "wr": "right"}  # wall -> meshes/<name>.stl
 

@@ -27,12 +27,10 @@ import tempfile
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_run import ROOT, Checks, run, table  # noqa: E402
+from example_run import ROOT, Checks, run, table
 
 EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
-sys.path.insert(0, EXAMPLE)
-from plot_triaxial import polydata_points, radius_profile  # noqa: E402
+from liggghts_membrane.triaxial_plot import polydata_points, radius_profile
 
 P = 1e5
 

@@ -3,9 +3,9 @@ import unittest
 
 import numpy as np
 
-import synthetic
-from biaxial import field
-from biaxial.curves import measured
+from liggghts_membrane import synthetic
+from liggghts_membrane import field
+from liggghts_membrane.curves import measured
 
 D50 = 1.75e-3
 

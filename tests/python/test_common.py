@@ -1,4 +1,4 @@
-"""bench/common.py (the module every benchmark uses) and the row functions of
+"""liggghts_membrane.bench.common (the module every benchmark uses) and the row functions of
 bench/accuracy_report.py, on hand-made input."""
 import math
 import os
@@ -7,10 +7,9 @@ import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "bench"))
 
-import accuracy_report as rep  # noqa: E402
-import common  # noqa: E402
+from liggghts_membrane.bench import accuracy_report as rep
+from liggghts_membrane.bench import common
 
 SCREEN = """\
 LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)

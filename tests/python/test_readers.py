@@ -6,8 +6,7 @@ import unittest
 
 import numpy as np
 
-import synthetic  # noqa: F401
-from biaxial import readers
+from liggghts_membrane import readers
 
 OUT = """\
 # biaxial test, rigid walls: hand-written
@@ -172,7 +171,7 @@ class Readers(unittest.TestCase):
         np.testing.assert_array_equal(d, [0.001, 0.0015, 0.0005])
 
     def test_increment_keeps_soil_present_in_both(self):
-        from biaxial import field
+        from liggghts_membrane import field
         frames = readers.read_dump(os.path.join(self.dir, "out.dump"))
         ids, x0, du = field.increment(frames[0], frames[5000])
         # 3 is a chain disk, 2 escaped in the second frame: only 1 is left

@@ -5,8 +5,7 @@ import unittest
 
 import numpy as np
 
-import synthetic  # noqa: F401  (puts scripts/ on sys.path)
-from biaxial import stats
+from liggghts_membrane import stats
 
 
 class TQuantile(unittest.TestCase):

@@ -26,8 +26,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-import synthetic  # noqa: E402
+from liggghts_membrane import synthetic
 
 
 def cut(path, keep):
