@@ -37,13 +37,6 @@ import numpy as np
 from .curves import NotMeasurable
 
 
-def d50_by_mass(radius):
-    """Diameter below which half the solid area (mass, 2D) lies."""
-    d = np.sort(2.0 * np.asarray(radius, dtype=float))
-    area = np.cumsum(d ** 2)
-    return float(np.interp(0.5 * area[-1], area, d))
-
-
 def soil_mask(frame):
     """Particles that belong in the field: membrane chain disks (flag 1, 2) follow the
     boundary and escaped disks (flag 3) are outside the sample, both are left out."""

@@ -5,6 +5,7 @@ import numpy as np
 
 from . import curves, field, particle_strain, readers
 from .curves import NotMeasurable, measured
+from .grains import d50_by_mass
 
 
 DUMP_COLUMNS = ("id", "x", "y", "radius")   # what the field and D50 need of OUT.dump
@@ -96,7 +97,7 @@ def load_run(name, prefix, d50_default):
         run.notes.append(f"{os.path.basename(prefix)}.dump lacks the column(s) {' '.join(lacking)} "
                          f"(needs {' '.join(DUMP_COLUMNS)}): no displacement field")
         return run
-    run.d50 = field.d50_by_mass(first["radius"][field.soil_mask(first)])
+    run.d50 = d50_by_mass(2.0 * first["radius"][field.soil_mask(first)], 2)
     run.d50_source = "by mass, from the first dump frame"
     plan, ea = choose_increments(run.table, run.curves["peak_index"], index)
     run.curves["E50_p"], run.curves["nu50_p"] = particle_strain.particle_secant(

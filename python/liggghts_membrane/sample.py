@@ -36,6 +36,8 @@ import sys
 
 import numpy as np
 
+from liggghts_membrane.grains import d50_by_mass
+
 
 def diameters(n, dmin, dmax, rng):
     """n full-size diameters, uniform by mass on [dmin, dmax], stratified in u."""
@@ -180,9 +182,7 @@ def main():
     por_full = 1.0 - solid / (width * height)
     por_half = 1.0 - 0.25 * solid / (width * height)
     # D50 by mass of the drawn sample
-    order = np.argsort(d)
-    cm = np.cumsum(d[order] ** 2)
-    d50 = d[order][np.searchsorted(cm, 0.5 * cm[-1])]
+    d50 = d50_by_mass(d, 2)
     mx, my = a.margin * width, a.margin * height
     # z: the box must follow the meshes (their z extent scales with the sample): LIGGGHTS
     # bins the mesh elements, and their periodic ghost images in z, over the box only

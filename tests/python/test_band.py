@@ -64,11 +64,6 @@ class Pieces(unittest.TestCase):
         self.assertAlmostEqual(field.inclination_from_horizontal(125.0), 55.0)
         self.assertAlmostEqual(field.inclination_from_horizontal(55.0), 55.0)
 
-    def test_d50_by_mass(self):
-        # two sizes with equal total area: the median falls between them
-        r = np.array([1.0] * 4 + [2.0])
-        self.assertTrue(2.0 <= field.d50_by_mass(r) <= 4.0)
-
 
 if __name__ == "__main__":
     unittest.main()
