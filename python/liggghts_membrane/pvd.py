@@ -1,5 +1,9 @@
-#!/usr/bin/env python3
-"""Collect the ParaView files of one biaxial shear into FOLDER/run.pvd: a time series
+"""ParaView collections (.pvd): the one module that writes and reads them.
+
+read_collection(path) reads a .pvd (fix membrane2d's and fix membrane3d's FILE.pvd,
+run.pvd) with an XML parser: [DataSet(timestep, part, name, path)].
+
+Collect the ParaView files of one biaxial shear into FOLDER/run.pvd: a time series
 whose every step holds the particles, the contacts, the walls and (membrane case) the
 membrane of that step, so that ParaView opens the whole run in one click.
 
@@ -8,9 +12,36 @@ membrane of that step, so that ParaView opens the whole run in one click.
 The steps are those of the particle files (particles_<step>.vtp); a kind whose file of
 that step is missing (the membrane before shear, a rigid-wall run) is left out of that
 step. doc/paraview.md describes the files."""
+import collections
 import os
 import re
 import sys
+import xml.etree.ElementTree as ET
+
+DataSet = collections.namedtuple("DataSet", "timestep part name path")
+
+
+def read_collection(path):
+    """The data sets of a .pvd file, in its order: DataSet(timestep (float), part (int),
+    name (str, '' without one), path (the file, relative to the .pvd's folder)).
+    OSError: no such file; ValueError: not a VTK collection."""
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as e:
+        raise ValueError(f"{path}: not an XML file ({e})") from None
+    if root.tag != "VTKFile" or root.get("type") != "Collection":
+        raise ValueError(f"{path}: not a VTK collection (VTKFile type=\"Collection\")")
+    folder = os.path.dirname(path)
+    return [DataSet(float(d.get("timestep", "0")), int(d.get("part", "0")), d.get("name", ""),
+                    os.path.join(folder, d.get("file")))
+            for d in root.iter("DataSet") if d.get("file")]
+
+
+def collection_frames(path, part=0):
+    """[(step, path)] of the data sets of one part of a .pvd ([] without the file)."""
+    if not os.path.exists(path):
+        return []
+    return [(int(round(d.timestep)), d.path) for d in read_collection(path) if d.part == part]
 
 # the kinds of file in the folder, in the order of their parts in run.pvd
 KINDS = ("particles", "contacts", "walls", "membrane")

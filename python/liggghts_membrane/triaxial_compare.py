@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The rigid-boundary comparison of run_comparison.sh: for each seed the same cuboid
 sample sheared with servo-controlled side walls and with fix membrane3d.
 
@@ -16,7 +15,6 @@ standard error of the paired differences.
 Usage: compare_boundaries.py OUT SEED [SEED ...]"""
 import math
 import os
-import re
 import sys
 
 import matplotlib
@@ -25,14 +23,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from liggghts_membrane.pvd import collection_frames  # noqa: E402
+from liggghts_membrane.readers import read_columns  # noqa: E402
+from liggghts_membrane.vtk_files import polydata_points  # noqa: E402
+
 BOUNDARIES = ("walls", "membrane")
 
 
 def read_run(path):
-    with open(path) as f:
-        cols = [line for line in f if line.startswith("#")][-1].lstrip("#").split()
-    data = np.loadtxt(path, comments="#", ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(cols)}
+    """{column: array} of one shear's table (readers.read_columns)."""
+    return read_columns(path)[0]
 
 
 def measures(run):
@@ -80,21 +80,6 @@ def table(runs, seeds):
     return "\n".join(lines)
 
 
-def polydata_points(path, corners_only=False):
-    """The points of an ascii VTK PolyData file (as fix membrane3d writes them); with
-    corners_only, the membrane's corners only, without the escaped spheres (point data
-    'escaped' = 1)."""
-    with open(path) as f:
-        text = f.read()
-    block = re.search(r"<Points>\s*<DataArray[^>]*>([^<]*)</DataArray>", text).group(1)
-    points = np.array(block.split(), dtype=float).reshape(-1, 3)
-    if corners_only:
-        escaped = re.search(r'<DataArray[^>]*Name="escaped"[^>]*>([^<]*)</DataArray>', text)
-        if escaped:
-            points = points[np.array(escaped.group(1).split(), dtype=float) == 0]
-    return points
-
-
 def half_width_profile(points, bin_width=0.002):
     """(z, half-width in x) of the membrane's corners in the slice through the axis
     |y - y_mid| < width / 6, in bins of z: half the x extent of each bin."""
@@ -110,17 +95,8 @@ def half_width_profile(points, bin_width=0.002):
     return np.array(z), np.array(half)
 
 
-def pvd_frames(pvd):
-    """[(step, path)] of the frames of fix membrane3d's collection PVD ([] without it)."""
-    if not os.path.exists(pvd):
-        return []
-    with open(pvd) as f:
-        entries = re.findall(r'timestep="(\d+)" part="0" file="([^"]+)"', f.read())
-    return [(int(step), os.path.join(os.path.dirname(pvd), name)) for step, name in entries]
-
-
 def membrane_frames(out, seed):
-    return pvd_frames(os.path.join(out, "membrane_%s_membrane.pvd" % seed))
+    return collection_frames(os.path.join(out, "membrane_%s_membrane.pvd" % seed))
 
 
 def plot(runs, seeds, out, png):

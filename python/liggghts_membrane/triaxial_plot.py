@@ -22,7 +22,8 @@ import numpy as np  # noqa: E402
 
 from liggghts_membrane.curves import find_peak, measured  # noqa: E402
 from liggghts_membrane.readers import read_columns  # noqa: E402
-from liggghts_membrane.triaxial_compare import polydata_points, pvd_frames  # noqa: E402
+from liggghts_membrane.pvd import collection_frames  # noqa: E402
+from liggghts_membrane.vtk_files import polydata_points  # noqa: E402
 
 USAGE = ("usage: plot_triaxial.py OUT.txt [PNG]   (OUT.txt: the table of in.triaxial, "
          "out/triaxial/triaxial.txt of run_triaxial.sh; PNG: default OUT.png)")
@@ -161,7 +162,7 @@ def choose_frames(steps, e1, stress_ratio, frame_steps):
 
 def profiles(c, stress_ratio, pvd):
     """[(label, step, ε₁, z, R)] of the frames drawn, or a reason (str) why none are."""
-    frames = pvd_frames(pvd)
+    frames = collection_frames(pvd)
     if not frames:
         return f"no membrane frames {pvd} (in.triaxial -var vtkstrain 0?)"
     steps = [s for s, _ in frames]
