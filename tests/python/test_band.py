@@ -56,6 +56,14 @@ class Pieces(unittest.TestCase):
         self.assertGreater(ok.mean(), 0.99)
         np.testing.assert_allclose(G[ok], np.broadcast_to(L, G[ok].shape), atol=1e-12)
 
+    def test_neighbours_within_the_radius(self):
+        # (0,0)-(1,0) and (0,0)-(0,1) are 1 apart (counted: distance <= radius),
+        # (1,0)-(0,1) sqrt 2 apart, (5,5) alone
+        x = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [5.0, 5.0]])
+        G, count = field.local_gradients(x, np.zeros_like(x), 1.0)
+        np.testing.assert_array_equal(count, [2, 1, 1, 0])
+        self.assertTrue(np.isnan(G).all())   # fewer than 3 neighbours everywhere
+
     def test_max_shear_strain(self):
         G = np.array([[[1e-3, 0.0], [0.0, -1e-3]], [[0.0, 1e-3], [0.0, 0.0]]])
         np.testing.assert_allclose(field.max_shear_strain(G), [2e-3, 1e-3])
