@@ -73,7 +73,11 @@ def load_run(name, prefix, d50_default):
         run.roses = readers.read_rose(prefix + ".rose", run.notes)
     else:
         run.notes.append(f"no {os.path.basename(prefix)}.rose: no rose diagrams")
-    run.d50, run.d50_source = d50_default, "--d50 (no dump)"
+    params = readers.read_params(prefix + ".params")
+    if isinstance(params.get("d50"), float) and params["d50"] > 0:
+        run.d50, run.d50_source = params["d50"], f"{os.path.basename(prefix)}.params (no dump)"
+    else:
+        run.d50, run.d50_source = d50_default, "--d50 (no dump)"
     run.curves["E50_p"] = run.curves["nu50_p"] = NotMeasurable("no dump file")
     if not os.path.exists(prefix + ".dump"):
         run.band_reason = NotMeasurable("no dump file")

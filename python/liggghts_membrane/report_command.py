@@ -45,7 +45,8 @@ def parse_args(argv):
                         "shear_membrane.txt (instead of --rigid/--membrane)")
     p.add_argument("--outdir", default="report", help="where the report goes (default: report)")
     p.add_argument("--d50", type=float, default=1.75e-3,
-                   help="D50 [m] used only when a run has no dump (default 1.75e-3)")
+                   help="D50 [m] used only when a run has no dump and no OUT.params naming d50 "
+                        "(default 1.75e-3)")
     args = p.parse_args(argv)
     ways = [w for w, given in (("OUT", args.runs), ("--rigid/--membrane", args.rigid or args.membrane),
                                ("--samples", args.samples)) if given]

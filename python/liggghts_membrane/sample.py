@@ -38,6 +38,8 @@ import numpy as np
 
 from liggghts_membrane.grains import d50_by_mass
 
+MARGIN = 0.3   # the box beyond the walls, a fraction of the width and height (--margin)
+
 
 def diameters(n, dmin, dmax, rng):
     """n full-size diameters, uniform by mass on [dmin, dmax], stratified in u."""
@@ -156,7 +158,7 @@ def main():
     p.add_argument("--porosity", type=float, default=0.12,
                    help="porosity of the full-size disks that sets the count (0.12)")
     p.add_argument("--density", type=float, default=2e8, help="particle density [kg/m^3] (2e8)")
-    p.add_argument("--margin", type=float, default=0.3,
+    p.add_argument("--margin", type=float, default=MARGIN,
                    help="simulation box beyond the walls, as a fraction of width/height (0.3): "
                         "room for the side walls to move out")
     p.add_argument("--zhalf", type=float, default=None,

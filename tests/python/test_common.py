@@ -36,10 +36,14 @@ class Helpers(unittest.TestCase):
         self.assertEqual(common.fmt("text"), "text")
 
     def test_done_counts(self):
-        line = "SHEAR done: escaped 2 chain failures 0 detections 1000 changing the chain 37"
-        self.assertEqual(common.done_counts(line), dict(escaped=2.0, chain_failures=0.0,
+        # the last membrane_counts line of a screen (in.shear_membrane prints one per run)
+        text = ("SHEAR done: escaped 9 chain failures 9\n"
+                "membrane_counts escaped=1 chain_failures=3\n"
+                "membrane_counts escaped=2 chain_failures=0 detections=1000 chain_changes=37\n"
+                "membrane_countsx escaped=5\n")
+        self.assertEqual(common.done_counts(text), dict(escaped=2.0, chain_failures=0.0,
                                                         detections=1000.0, chain_changes=37.0))
-        self.assertEqual(common.done_counts("SHEAR done"), {})
+        self.assertEqual(common.done_counts("SHEAR done: escaped 2 chain failures 0"), {})
 
     def test_messages_and_symptom(self):
         with tempfile.TemporaryDirectory() as d:

@@ -339,7 +339,8 @@ def execute(run, args, restart):
     # in the frozen scripts' folder, where LIGGGHTS finds their includes
     rc, wall, cpu = common.run_command(cmd, os.path.dirname(run.script), screen, timeout)
     tloop, nsteps = common.loop_times(os.path.join(run.dir, "log.shear"))
-    done = [l for l in open(screen, errors="replace").read().splitlines() if l.startswith("SHEAR done")]
+    text = open(screen, errors="replace").read()
+    done = [l for l in text.splitlines() if l.startswith("SHEAR done")]
     meta = dict(params=run.params, rc=rc, process_wall_s=wall, cpu_s=cpu, loop_time_s=tloop,
                 steps=nsteps, done_line=done[-1] if done else "", cmd=" ".join(cmd),
                 ranks=run.ranks, cores=os.cpu_count(), loadavg_start=loadavg)
@@ -349,7 +350,7 @@ def execute(run, args, restart):
         meta["status"] = "failed"
         meta["symptom"] = ("timeout after %.0f s: " % wall if rc == "timeout" else f"rc {rc}: ") \
             + common.symptom(screen)
-    meta.update(common.done_counts(meta["done_line"]))
+    meta.update(common.done_counts(text))
     common.write_context(os.path.join(run.dir, "meta.json"), meta)
     meta["executed_now"] = True
     run.meta = meta

@@ -18,31 +18,22 @@ import argparse
 import concurrent.futures as cf
 import csv
 import os
-import re
 import time
 
 from liggghts_membrane.bench import common
 from liggghts_membrane.bench.common import HERE, ROOT
+from liggghts_membrane.readers import key_value_lines
 
-# the PREPARED line of in.prepare, the fields read here
-FIELDS = {
-    "porosity": r"after consolidation (\S+);",
-    "C_n": r"C_n \(fabric\) (\S+)",
-    "Z_m": r"Z_m (\S+)",
-    "rattlers": r"rattlers (\S+)",
-    "min_wall": r"min_wall/sigma (\S+)",
-}
+# the key=value line 'prepared ...' of in.prepare: {our name: its key}
+FIELDS = {"porosity": "porosity", "C_n": "cn_fabric", "Z_m": "zm", "rattlers": "rattlers",
+          "min_wall": "min_wall_ratio"}
 
 
 def prepared_values(screen_text):
-    line = next((l for l in screen_text.splitlines() if l.startswith("PREPARED porosity")), None)
-    if line is None:
+    lines = key_value_lines(screen_text, "prepared")
+    if not lines:
         return None
-    out = {}
-    for key, pattern in FIELDS.items():
-        m = re.search(pattern, line)
-        out[key] = float(m.group(1)) if m else float("nan")
-    return out
+    return {key: float(lines[0].get(name, float("nan"))) for key, name in FIELDS.items()}
 
 
 def prepare(scale, seed, n0, rundir):

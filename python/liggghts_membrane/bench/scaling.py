@@ -38,6 +38,7 @@ import shutil
 import sys
 import time
 
+from liggghts_membrane import params, readers, sample
 from liggghts_membrane.bench import common
 
 PREFIX = os.path.join(common.HERE, "scaling")
@@ -115,9 +116,9 @@ def mpi_run(np_, script, folder, name, settings, timed=True):
 
 
 LOOP = re.compile(r"^Loop time of (\S+) on (\d+) procs for (\d+) steps", re.M)
-TRAFFIC = re.compile(r"received (\S+) kB per step .*? and (\S+) kB per detection .*? over (\d+) steps "
-                     r"with (\d+) detections \((\d+) of them a pass over all disks\); the fix took (\S+) s "
-                     r"\(slowest rank\), (\S+) s of it")
+# fix membrane2d's key=value line at the end of each run (membrane_gather.cpp report_traffic)
+TRAFFIC_KEYS = ("kb_per_step", "kb_per_detection", "steps", "detections", "full_passes",
+                "fix_seconds", "search_seconds")
 GHOSTS = re.compile(r"^Nghost:\s+(\S+) ave", re.M)
 PAIR = re.compile(r"^Pair\s+time \(%\) = \S+ \((\S+)\)", re.M)
 
@@ -136,7 +137,7 @@ def prepare_from_scratch(scale, np_):
         common.generate_sample(scale, SEED, data)
     text, _, wall = mpi_run(np_, os.path.join(common.EXAMPLES, "in.prepare"), folder, "prepare",
                             {"data": data, "out": os.path.join(folder, "prepared.restart")}, timed=False)
-    disks = int(re.search(r"^(\d+) atoms", open(data).read(), re.M).group(1))
+    disks = len(readers.read_data_diameters(data))
     steps = sum(n for _, n in loops(text))
     return dict(scale=scale, disks=disks, ranks=np_, wall_s=wall, steps=steps,
                 s_per_disk=wall / disks, us_per_disk_step=1e6 * wall / (disks * steps * 1.0 / np_)
@@ -144,26 +145,21 @@ def prepare_from_scratch(scale, np_):
 
 
 def read_walls(path):
-    return {m.group(1): float(m.group(2)) for m in
-            re.finditer(r"variable (\w+) equal (\S+)", open(path).read())}
+    """The walls file of in.prepare (OUT.walls: 'variable NAME equal VALUE' lines)."""
+    values = params.read_variables(path, follow_includes=False)
+    return {name: params.number(values, name) for name in values}
 
 
 def tile_data(base_data, walls, tiles, out_data, out_walls):
     """The data file of `base_data` repeated tiles x tiles times, one wall box apart
     (xr0 - xl0, yt0 - yb0), and the walls file of the tiled box."""
-    lines = open(base_data).read().splitlines()
-    start = lines.index("Atoms") + 2
-    atoms = []
-    for line in lines[start:]:
-        if not line.strip():
-            break
-        w = line.split()
-        atoms.append((int(w[1]), float(w[2]), float(w[4]), float(w[5])))   # type, diameter, x, y
+    a = readers.read_data_atoms(base_data)
+    atoms = list(zip(a["type"].astype(int), a["diameter"], a["x"], a["y"]))
     wx, wy = walls["xr0"] - walls["xl0"], walls["yt0"] - walls["yb0"]
     tiled = dict(xl0=walls["xl0"], xr0=walls["xl0"] + tiles * wx, yb0=walls["yb0"],
                  yt0=walls["yb0"] + tiles * wy, W0=walls["W0"] * tiles, H0=walls["H0"] * tiles,
                  scale=walls["scale"] * tiles)
-    margin = 0.3   # as generate_sample.py
+    margin = sample.MARGIN   # as the sample command
     W, H = tiles * wx, tiles * wy
     rho = common.script_number(os.path.join(common.EXAMPLES, "material.inc"), "rho")
     with open(out_data, "w") as f:
@@ -237,7 +233,8 @@ def timed_point(restart, scale, disks, np_, args):
         row["pair_pct_membrane"] = pair[1] if len(pair) > 1 else float("nan")
         ghosts = [float(x) for x in GHOSTS.findall(text)]
         row["ghosts_per_rank"] = ghosts[1] if len(ghosts) > 1 else 0.0
-        traffic = [tuple(float(x) for x in m) for m in TRAFFIC.findall(text)]
+        traffic = [tuple(line[k] for k in TRAFFIC_KEYS)
+                   for line in readers.key_value_lines(text, "membrane2d_traffic")]
         # the timed runs: each the report just before its Loop time line
         shares, searches, kb_step, kb_det, det, full = [], [], 0.0, 0.0, 0.0, 0.0
         for (t, n), tr in zip(timed, traffic[1:1 + args.repeat]):

@@ -161,19 +161,18 @@ def prepare(s, args):
     rc, wall, cpu = common.run_command(cmd, os.path.dirname(args.scripts["prepare"]), screen, args.timeout)
     text = open(screen, errors="replace").read()
     meta = dict(params=s.params, rc=rc, wall_s=wall, cpu_s=cpu, cmd=" ".join(cmd))
-    m = re.search(r"PREPARED porosity after growth (\S+), after consolidation (\S+); C_n \([^)]*\) (\S+);", text)
-    g = re.search(r"growth: diameters x (\S+)", text)
-    e = re.search(r"equilibrium after step (\d+):.*ok = (\d)\)", text)
+    prepared = readers.key_value_lines(text, "prepared")     # in.prepare's key=value line
+    m = prepared[-1] if prepared else None
     err, warns = common.messages(screen, BENIGN)
     meta.update(error=err, warnings=warns)
-    if rc == 0 and m and g and os.path.exists(s.restart):
-        meta["porosity_grown"], meta["porosity"], meta["C_n"] = map(float, m.groups())
-        meta["ftot"] = float(g.group(1))
+    if rc == 0 and m and os.path.exists(s.restart):
+        meta["porosity_grown"], meta["porosity"], meta["C_n"] = m["porosity_grown"], m["porosity"], m["cn"]
+        meta["ftot"] = m["growth"]
         d = readers.read_data_diameters(s.data) * meta["ftot"]      # the data file is at half size
         meta["N"], meta["d_min"], meta["d_mean"] = len(d), float(d.min()), float(d.mean())
         meta["m_min"] = math.pi * (meta["d_min"] / 2) ** 2 * RHO
-        meta["equilibrium"] = bool(e and e.group(2) == "1")
-        meta["equilibrium_step"] = int(e.group(1)) if e else None
+        meta["equilibrium"] = m["equilibrium_ok"] == 1
+        meta["equilibrium_step"] = int(m["equilibrium_step"])
         meta["status"], meta["symptom"] = "ok", ""
     else:
         meta["status"] = "error" if err else "failed"
@@ -260,7 +259,7 @@ def execute(run, args):
         meta["status"], meta["symptom"] = "failed", f"rc {rc}: " + common.symptom(screen)
     else:
         meta["status"], meta["symptom"] = "finished", ""
-    meta.update({k: v for k, v in common.done_counts(meta["done_line"]).items()
+    meta.update({k: v for k, v in common.done_counts(text).items()
                  if k in ("escaped", "chain_failures")})
     common.write_context(metafile, meta)
     meta["executed_now"] = True
