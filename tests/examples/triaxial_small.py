@@ -30,6 +30,8 @@ import numpy as np
 from example_run import ROOT, Checks, run, table
 
 EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
+from liggghts_membrane import vtk_files
+from liggghts_membrane.pvd import collection_frames
 from liggghts_membrane.triaxial_plot import polydata_points, radius_profile
 
 P = 1e5
@@ -37,22 +39,12 @@ P = 1e5
 
 def vtk_frames(pvd):
     """(step, points, polys, verts, load sum) of each frame of the membrane's collection,
-    read with VTK's own readers."""
-    import vtk  # Debian's python3-vtk9
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    folder = os.path.dirname(pvd)
-    with open(pvd) as f:
-        entries = re.findall(r'timestep="(\d+)" part="0" file="([^"]+)"', f.read())
+    read with the package's readers (pvd: the collection, vtk_files: VTK's own reader)."""
     frames = []
-    for step, name in entries:
-        reader = vtk.vtkXMLPolyDataReader()
-        reader.SetFileName(os.path.join(folder, name))
-        reader.Update()
-        poly = reader.GetOutput()
-        points = vtk_to_numpy(poly.GetPoints().GetData())
-        load = vtk_to_numpy(poly.GetPointData().GetArray("load"))
-        frames.append((int(step), points, poly.GetNumberOfPolys(), poly.GetNumberOfVerts(),
+    for step, path in collection_frames(pvd):
+        poly = vtk_files.read_polydata(path)
+        load = vtk_files.point_array(poly, "load")
+        frames.append((step, vtk_files.points(poly), poly.GetNumberOfPolys(), poly.GetNumberOfVerts(),
                        load.sum(axis=0)))
     return frames
 
