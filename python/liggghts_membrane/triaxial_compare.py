@@ -138,6 +138,9 @@ def plot(runs, seeds, out, png):
 
 
 def main():
+    if len(sys.argv) < 3 or sys.argv[1] in ("-h", "--help"):
+        print(__doc__, file=sys.stdout if len(sys.argv) == 2 else sys.stderr)
+        sys.exit(0 if len(sys.argv) == 2 else 2)
     out, seeds = sys.argv[1], sys.argv[2:]
     runs = {b: {s: read_run(os.path.join(out, "%s_%s.txt" % (b, s))) for s in seeds}
             for b in BOUNDARIES}
