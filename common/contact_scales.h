@@ -18,9 +18,9 @@
 
 #include "allgather.h"
 #include "grain_size.h"
-#include "math_const.h"
-#include "stability_checks.h"
-#include "stability_messages.h"
+#include "math_constants.h"
+#include "stability_limits.h"
+#include "style_error.h"
 
 // The two numbers that set the contact time scale sqrt(m/k) of a linear
 // granular contact model: the largest normal stiffness of the per-type-pair
@@ -51,7 +51,8 @@ inline double min_group_mass(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm worl
   return mmin < 1e300 ? mmin : 0.0;
 }
 
-// Grain scales of a group over all ranks: D50 by mass (for one density) and the
+// Grain scales of a group over all ranks: D50 by mass (for one density; the step
+// definition of grain_size.h) and the
 // mean density: group mass / disk area (per unit thickness) in 2D, / sphere
 // volume in 3D.
 struct GrainScales {
@@ -72,14 +73,14 @@ inline GrainScales group_grain_scales(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_
     const double r = atom->radius[i];
     diameters.push_back(2.0 * r);
     if (atom->rmass_flag) sums[0] += atom->rmass[i];
-    sums[1] += dimension == 3 ? 4.0 / 3.0 * LAMMPS_NS::MathConst::MY_PI * r * r * r
-                              : LAMMPS_NS::MathConst::MY_PI * r * r;
+    sums[1] +=
+        dimension == 3 ? 4.0 / 3.0 * math_constants::PI * r * r * r : math_constants::PI * r * r;
   }
   allgather_doubles(world, diameters, all, counts, displs);
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   GrainScales g;
   g.empty = all.empty();
-  g.d50 = stability::d50_by_mass(all, dimension);
+  g.d50 = grains::d50_by_mass(all, dimension); // the step definition (grain_size.h)
   g.density = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
   return g;
 }
@@ -97,9 +98,8 @@ inline double check_time_step(LAMMPS_NS::LAMMPS *lmp, int groupbit, MPI_Comm wor
   const double mmin = min_group_mass(lmp, groupbit, world);
   const double dt = lmp->update->dt;
   const double ratio = stability::time_step_ratio(dt, mmin, kmax);
-  if (ratio > limit && dt != warned_dt && lmp->comm->me == 0)
-    lmp->error->warning(FLERR,
-                        (prefix + stability::time_step_warning(dt, mmin, kmax, limit)).c_str());
+  if (ratio > limit && dt != warned_dt)
+    style_warning(lmp, prefix, stability::time_step_warning(dt, mmin, kmax, limit));
   if (ratio > limit) warned_dt = dt;
   return ratio;
 }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -10,7 +11,13 @@
 // number (one per style), the format version and the record length, so that
 // a record of another format, or a cut one, is refused instead of misread.
 // LIGGGHTS passes a fix its record without the length: the header carries it.
-// No LIGGGHTS here (unit-tested with the membrane's record).
+// No LIGGGHTS here (unit-tested in tests/unit/common and with the membranes'
+// records); common/restart_envelope.h writes and reads it in a restart file.
+//
+//   write: RestartRecordWriter out(MAGIC, VERSION); out.put(x) ...;
+//          write_restart_record(lmp, fp, out.finish());          (restart_envelope.h)
+//   read:  RestartRecordReader in = read_restart_record(raw, MAGIC, VERSION);
+//          x = in.get() ...; if (!in.finished()) -> in.error() says why
 
 class RestartRecordWriter {
  public:
@@ -31,10 +38,13 @@ class RestartRecordWriter {
 
 class RestartRecordReader {
  public:
-  // `n` bounds what may be read at `data` (pass a large n when unknown); formats
+  // what LIGGGHTS tells a fix of its record's size: nothing (Fix::restart gets
+  // the bytes alone), so the header's length field is the only bound
+  static constexpr std::size_t UNKNOWN_LENGTH = static_cast<std::size_t>(-1) / sizeof(double);
+
+  // `n` bounds what may be read at `data` (UNKNOWN_LENGTH when unknown); formats
   // `oldest` to `version` are read (the caller asks version() what is there)
-  RestartRecordReader(const double *data, std::size_t n, double magic, int version,
-                      int oldest = -1)
+  RestartRecordReader(const double *data, std::size_t n, double magic, int version, int oldest = -1)
     : data_(data)
   {
     if (oldest < 0) oldest = version;
@@ -100,5 +110,28 @@ class RestartRecordReader {
   int version_ = 0;
   std::string error_;
 };
+
+// LIGGGHTS' envelope of a fix's global state in a restart file (what
+// Modify::write_restart expects of Fix::write_restart): the size in bytes as an
+// int, then the record's doubles. Returns false when the file took less.
+inline bool write_record_bytes(std::FILE *fp, const std::vector<double> &record)
+{
+  const int size = static_cast<int>(record.size() * sizeof(double));
+  return std::fwrite(&size, sizeof(int), 1, fp) == 1 &&
+         std::fwrite(record.data(), sizeof(double), record.size(), fp) == record.size();
+}
+
+// The record in the bytes LIGGGHTS passes to Fix::restart (the envelope's
+// content without the size, aligned by new[]; every rank gets them): a reader that has checked the
+// magic, the version (`oldest` to `version`) and the length (at most
+// `max_length` doubles when the caller knows a bound), or says in error() why
+// the record cannot be read.
+inline RestartRecordReader
+read_restart_record(const char *raw, double magic, int version, int oldest = -1,
+                    std::size_t max_length = RestartRecordReader::UNKNOWN_LENGTH)
+{
+  return RestartRecordReader(reinterpret_cast<const double *>(raw), max_length, magic, version,
+                             oldest);
+}
 
 #endif

@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <string>
 
-#include "error.h"
 #include "input.h"
 #include "lammps.h"
 #include "modify.h"
@@ -13,11 +12,13 @@
 #include "variable.h"
 
 #include "style_args.h"
+#include "style_error.h"
 
 // A style argument given as a number or as an equal-style variable v_name
 // (pressures, platen positions, strain rates). Errors name the style through
-// `prefix` ("Fix membrane2d: ") and the keyword through `name`, in the form
-// of style_args.h.
+// `prefix` (style_prefix(), style_error.h) and the keyword through `name`, in
+// the form of style_args.h. A variable has one value on every rank (equal-style),
+// so every rank takes the same decision.
 class ScalarInput {
  public:
   enum class Sign { Any, NonNegative, Positive };
@@ -47,18 +48,16 @@ class ScalarInput {
     if (varname_.empty()) return;
     ivar_ = lmp->input->variable->find(const_cast<char *>(varname_.c_str()));
     if (ivar_ < 0)
-      lmp->error->all(FLERR, keyword_message(prefix, name, "v_" + varname_,
-                                             "variable '" + varname_ +
-                                                 "' does not exist; define it "
-                                                 "(variable " +
-                                                 varname_ + " equal ...) before the run")
-                                 .c_str());
+      style_error(lmp, prefix,
+                  keyword_text(name, "v_" + varname_,
+                               "variable '" + varname_ + "' does not exist; define it (variable " +
+                                   varname_ + " equal ...) before the run"));
     if (!lmp->input->variable->equalstyle(ivar_))
-      lmp->error->all(FLERR, keyword_message(prefix, name, "v_" + varname_,
-                                             "variable '" + varname_ +
-                                                 "' is not equal-style; use an "
-                                                 "equal-style variable (one number)")
-                                 .c_str());
+      style_error(
+          lmp, prefix,
+          keyword_text(name, "v_" + varname_,
+                       "variable '" + varname_ +
+                           "' is not equal-style; use an equal-style variable (one number)"));
   }
 
   // computes referenced by the variable are invoked on demand, as fix ave/time does
@@ -84,12 +83,11 @@ class ScalarInput {
                  bool non_negative, double v) const
   {
     if (!std::isfinite(v) || (non_negative && !(v >= 0.0)))
-      lmp->error->all(FLERR,
-                      keyword_message(prefix, name, text(),
-                                      std::string("is ") + number_text(v) + " at step " +
-                                          std::to_string(lmp->update->ntimestep) + "; it must be " +
-                                          (non_negative ? "a finite number >= 0" : "finite"))
-                          .c_str());
+      style_error(lmp, prefix,
+                  keyword_text(name, text(),
+                               std::string("is ") + number_text(v) + " at step " +
+                                   std::to_string(lmp->update->ntimestep) + "; it must be " +
+                                   (non_negative ? "a finite number >= 0" : "finite")));
     return v;
   }
 

@@ -8,26 +8,36 @@
 #include <initializer_list>
 #include <string>
 
-#include "error.h"
 #include "lammps.h"
 
 #include "number_text.h"
+#include "style_error.h"
 
 // The keyword/value arguments of a style, walked in order, with one form for
-// every message of our four styles (doc/messages.md):
+// every message of our styles (doc/messages.md):
 //
-//   <Style> <name>: keyword '<key>' = <value>: <what is wrong>; <usage or what to do>
-//   <Style> <name>: keyword '<key>' needs a value: <usage>
-//   <Style> <name>: keyword '<key>' is required: <usage>
-//   <Style> <name>: unknown keyword '<key>'; keywords: <list>
+//   <Kind> <style> (id <ID>): keyword '<key>' = <value>: <what is wrong>; <usage or what to do>
+//   <Kind> <style> (id <ID>): keyword '<key>' needs a value: <usage>
+//   <Kind> <style> (id <ID>): keyword '<key>' is required: <usage>
+//   <Kind> <style> (id <ID>): unknown keyword '<key>'; keywords: <list>
 //
-// `prefix` is "Fix membrane2d: ", "Compute fabric: ", ...; `usage` says what
-// the value is ("band W: a length in distance units, default 4 x D50").
+// `prefix` is what style_prefix() (style_error.h) makes, "Compute fabric (id
+// fab): ", or any other prefix the style gives; `usage` says what the value is
+// ("band W: a length in distance units, default 4 x D50"). Errors are raised
+// with style_error().
 
+// "keyword 'key' = value: problem", for style_error(lmp, prefix, ...)
+inline std::string keyword_text(const std::string &key, const std::string &value,
+                                const std::string &problem)
+{
+  return "keyword '" + key + "' = " + (value.empty() ? "''" : value) + ": " + problem;
+}
+
+// the same with the prefix in front
 inline std::string keyword_message(const std::string &prefix, const std::string &key,
                                    const std::string &value, const std::string &problem)
 {
-  return prefix + "keyword '" + key + "' = " + (value.empty() ? "''" : value) + ": " + problem;
+  return prefix + keyword_text(key, value, problem);
 }
 
 class StyleArgs {
@@ -49,7 +59,7 @@ class StyleArgs {
   // the next word as this keyword's value
   const char *value(const std::string &usage)
   {
-    if (next_ >= narg_) fail_all(prefix_ + "keyword '" + key_ + "' needs a value: " + usage);
+    if (next_ >= narg_) fail("keyword '" + key_ + "' needs a value: " + usage);
     value_ = arg_[next_++];
     return value_;
   }
@@ -119,34 +129,28 @@ class StyleArgs {
   // the current value is wrong: "<prefix>keyword 'k' = v: problem; usage"
   [[noreturn]] void bad(const std::string &problem, const std::string &usage) const
   {
-    fail_all(keyword_message(prefix_, key_, value_, problem + "; " + usage));
+    fail(keyword_text(key_, value_, problem + "; " + usage));
   }
 
   // a keyword this style knows but refuses here; `why` says why and what instead
-  [[noreturn]] void refused(const std::string &why) const
-  {
-    fail_all(prefix_ + "keyword '" + key_ + "' " + why);
-  }
+  [[noreturn]] void refused(const std::string &why) const { fail("keyword '" + key_ + "' " + why); }
 
   [[noreturn]] void unknown(const std::string &keywords) const
   {
-    fail_all(prefix_ + "unknown keyword '" + key_ + "'; keywords: " + keywords);
+    fail("unknown keyword '" + key_ + "'; keywords: " + keywords);
   }
 
   [[noreturn]] void required(const std::string &key, const std::string &usage) const
   {
-    fail_all(prefix_ + "keyword '" + key + "' is required: " + usage);
+    fail("keyword '" + key + "' is required: " + usage);
   }
 
   const std::string &current_key() const { return key_; }
   const char *current_value() const { return value_; }
 
  private:
-  [[noreturn]] void fail_all(const std::string &text) const
-  {
-    lmp_->error->all(FLERR, text.c_str());
-    std::abort(); // Error::all does not return; tells the compiler so
-  }
+  // every rank reads the same arguments: every rank stops
+  [[noreturn]] void fail(const std::string &text) const { style_error(lmp_, prefix_, text); }
 
   LAMMPS_NS::LAMMPS *lmp_;
   std::string prefix_;

@@ -30,6 +30,15 @@ inline std::string style_prefix(const char *kind, const char *style, const char 
   std::abort(); // Error::all does not return
 }
 
+// Stops the run from one rank, for what only that rank knows (rank 0 writing a
+// file): the others are stopped by MPI_Abort.
+[[noreturn]] inline void style_error_one(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix,
+                                         const std::string &text)
+{
+  lmp->error->one(FLERR, (prefix + text).c_str());
+  std::abort(); // Error::one does not return
+}
+
 // Printed once, by rank 0.
 inline void style_warning(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix,
                           const std::string &text)

@@ -12,7 +12,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
-#include "error.h"
 #include "input.h"
 #include "memory.h"
 #include "modify.h"
@@ -21,39 +20,32 @@
 #include "variable.h"
 
 #include "fabric_output3d.h"
+#include "math_constants.h"
 #include "stability_index.h"
 #include "style_args.h"
+#include "style_error.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
 
-constexpr double RAD2DEG = 180.0 / M_PI;
-
-// every message starts so (doc/messages.md, common/style_args.h)
-const char *const PREFIX = "Compute fabric: ";
-
-std::string msg(const std::string &text)
-{
-  return PREFIX + text;
-}
+using math_constants::RAD2DEG;
 
 } // namespace
 
 /* ---------------------------------------------------------------------- */
 
 ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
-  : Compute(lammps, iarg, narg, arg), nbins(18), estimator(fabric::Estimator::Unbiased),
+  : Compute(lammps, iarg, narg, arg), prefix(style_prefix("Compute", style, id)), nbins(18), estimator(fabric::Estimator::Unbiased),
     stability_flag(false), rattlers_flag(false), histogram_flag(false), stress_flag(false),
     walls_flag(false), area_ivar(-1), iregion(-1), three_d(lammps->domain->dimension == 3),
-    contact_source(lammps, this), warned_no_normal(false), nmax_atom(0)
+    contact_source(lammps, this, prefix), warned_no_normal(false), nmax_atom(0)
 {
   if (!atom->radius_flag)
-    error->all(FLERR, msg("requires per-atom radii; use atom_style granular (or sphere)").c_str());
+    style_error(lmp, prefix, "requires per-atom radii; use atom_style granular (or sphere)");
   if (atom->tag_enable == 0 || atom->map_style == 0)
-    error->all(FLERR, msg("requires atom IDs and an atom map; add atom_modify map array "
-                          "before create_box")
-                          .c_str());
+    style_error(lmp, prefix,
+                "requires atom IDs and an atom map; add atom_modify map array before create_box");
 
   // the base class leaves its output pointers uninitialised
   vector = vector_atom = vector_local = nullptr;
@@ -89,7 +81,7 @@ ComputeFabric::ComputeFabric(LAMMPS *lammps, int &iarg, int narg, char **arg)
 
 void ComputeFabric::parse_args(int iarg, int narg, char **arg)
 {
-  StyleArgs args(lmp, PREFIX, narg, arg, iarg);
+  StyleArgs args(lmp, prefix, narg, arg, iarg);
   while (args.more()) {
     const std::string key = args.keyword();
     if (three_d && (key == "bins" || key == "estimator" || key == "histogram"))
@@ -148,12 +140,11 @@ void ComputeFabric::parse_args(int iarg, int narg, char **arg)
                            : "bins, estimator, stability, rattlers, histogram, stress, region, walls");
     }
   }
-  if (rattlers_flag && !stability_flag && comm->me == 0)
-    error->warning(FLERR,
-                   keyword_message(PREFIX, "rattlers", "yes",
-                                   "has no effect without stability yes (it only changes the "
-                                   "mean stability index, vector entry 13); add stability yes")
-                       .c_str());
+  if (rattlers_flag && !stability_flag)
+    style_warning(lmp, prefix,
+                  keyword_text("rattlers", "yes",
+                               "has no effect without stability yes (it only changes the mean "
+                               "stability index, vector entry 13); add stability yes"));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -175,15 +166,14 @@ void ComputeFabric::init()
   if (!idregion.empty()) {
     iregion = domain->find_region(const_cast<char *>(idregion.c_str()));
     if (iregion < 0)
-      error->all(FLERR,
-                 keyword_message(PREFIX, "region", idregion,
-                                 "region " + idregion +
-                                     " was deleted; define it again "
-                                     "before the run, or use a compute fabric without region")
-                     .c_str());
+      style_error(lmp, prefix,
+                  keyword_text("region", idregion,
+                               "region " + idregion +
+                                   " was deleted; define it again before the run, or use a "
+                                   "compute fabric without region"));
   }
   if (stress_flag) {
-    area_in.init(lmp, PREFIX, "stress"); // the variable exists and is equal-style
+    area_in.init(lmp, prefix, "stress"); // the variable exists and is equal-style
     if (area_in.is_variable())
       area_ivar = input->variable->find(const_cast<char *>(area_in.text().substr(2).c_str()));
   }
@@ -275,23 +265,23 @@ void ComputeFabric::warn_no_normal(long count)
 double ComputeFabric::sample_area()
 {
   if (evaluating_area) // the variable invokes this compute: it would recurse until it crashed
-    error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
-                                      "reads compute " + std::string(id) + " itself; give the "
-                                      "sample's size from other quantities")
-                          .c_str());
+    style_error(lmp, prefix,
+                keyword_text("stress", area_in.text(),
+                             "reads compute " + std::string(id) +
+                                 " itself; give the sample's size from other quantities"));
   evaluating_area = true;
   const double area =
       area_in.is_variable() ? input->variable->compute_equal(area_ivar) : area_in.evaluate(lmp);
   evaluating_area = false;
   if (!(std::isnormal(area) && area > 0.0))
-    error->all(FLERR, keyword_message(PREFIX, "stress", area_in.text(),
-                                      "is " + number_text(area) + " at step " +
-                                          std::to_string(update->ntimestep) +
-                                          "; it must be a positive number (the sample " +
-                                          (three_d ? "volume)" : "area)") +
-                                          // 1e-320 would make every stress infinite
-                                          (area > 0.0 ? ", not a subnormal one" : ""))
-                          .c_str());
+    style_error(lmp, prefix,
+                keyword_text("stress", area_in.text(),
+                             "is " + number_text(area) + " at step " +
+                                 std::to_string(update->ntimestep) +
+                                 "; it must be a positive number (the sample " +
+                                 (three_d ? "volume)" : "area)") +
+                                 // 1e-320 would make every stress infinite
+                                 (area > 0.0 ? ", not a subnormal one" : "")));
   return area;
 }
 

@@ -71,6 +71,7 @@ class ComputeFabric : public Compute {
   };
 
  private:
+  const std::string prefix; // of every message: "Compute fabric (id fab): "
   int nbins;
   fabric::Estimator estimator;
   bool stability_flag; // mean stability index in the vector

@@ -25,22 +25,12 @@
 
 #include "contact_record.h"
 #include "fabric_sums.h"
-#include "style_args.h"
+#include "math_constants.h"
+#include "number_text.h"
+#include "style_error.h"
 
 using namespace LAMMPS_NS;
 using namespace fabric;
-
-namespace {
-
-// every message starts so (doc/messages.md)
-const char *const PREFIX = "Compute fabric: ";
-
-std::string msg(const std::string &text)
-{
-  return PREFIX + text;
-}
-
-} // namespace
 
 bool LAMMPS_NS::atom_selected(const Atom *atom, int i, int groupbit, Region *region)
 {
@@ -63,9 +53,9 @@ static void merge_exact_sums(void *in, void *inout, int *len, MPI_Datatype *)
   }
 }
 
-FabricLocal::FabricLocal(LAMMPS *lammps, Compute *fabric_compute)
-  : Pointers(lammps), owner(fabric_compute), three_d(lammps->domain->dimension == 3),
-    sources(lammps, fabric_compute)
+FabricLocal::FabricLocal(LAMMPS *lammps, Compute *fabric_compute, const std::string &prefix_)
+  : Pointers(lammps), owner(fabric_compute), prefix(prefix_),
+    three_d(lammps->domain->dimension == 3), sources(lammps, fabric_compute, prefix_)
 {
   // a pair is one element, so MPI never splits one when it segments a reduction
   MPI_Type_contiguous(2, MPI_DOUBLE, &pair_type);
@@ -137,7 +127,7 @@ void FabricLocal::add_contact(const Contact &c, int index_a, int index_b)
   const double angle = has_normal(c) ? std::atan2(c.ny, c.nx) : NAN;
   theta.push_back(angle);
   ends[index_a].push_back(angle);
-  if (index_b >= 0) ends[index_b].push_back(angle + M_PI);
+  if (index_b >= 0) ends[index_b].push_back(angle + math_constants::PI);
 }
 
 void FabricLocal::add_contact3(const Contact3 &c, int index_a, int index_b)
@@ -305,19 +295,18 @@ void FabricLocal::warn_missing_normals(long count, const std::string &count_outp
   MPI_Allreduce(&key, &first, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, world);
   if (key != first) length = std::numeric_limits<double>::infinity();
   MPI_Allreduce(&length, &distance, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (comm->me != 0) return;
   const long a = static_cast<long>(first >> 32);
   const uint32_t low = static_cast<uint32_t>(first & 0xffffffffULL);
   const std::string pair = low == 0xffffffffU
                                ? "atom " + std::to_string(a) + " and a mesh wall"
                                : "atoms " + std::to_string(a) + " and " + std::to_string(low);
-  const std::string text =
-      msg(std::to_string(count) + " contact(s) with coincident centres (" + pair + ", distance " +
-          number_text(distance) +
-          ") have no normal; left out of the fabric and force directions, the stress and the "
-          "stability index, still counted in N_c, C_n and Z_m (" +
-          count_output + " is their number); were two atoms created at one point? (warned once)");
-  error->warning(FLERR, text.c_str());
+  style_warning(lmp, prefix,
+                std::to_string(count) + " contact(s) with coincident centres (" + pair +
+                    ", distance " + number_text(distance) +
+                    ") have no normal; left out of the fabric and force directions, the stress "
+                    "and the stability index, still counted in N_c, C_n and Z_m (" +
+                    count_output +
+                    " is their number); were two atoms created at one point? (warned once)");
 }
 
 double FabricLocal::memory_usage() const

@@ -40,8 +40,8 @@ class FabricLocal : protected Pointers {
   // `fabric_compute`: the compute fabric it works for (its ID and group name the
   // messages and the computes it creates, ID_contacts and ID_walls); it must
   // have comm_reverse = END_SLOTS and pass its reverse communication to
-  // pack_ends / unpack_ends
-  FabricLocal(LAMMPS *lammps, Compute *fabric_compute);
+  // pack_ends / unpack_ends; `prefix` starts its messages (style_prefix())
+  FabricLocal(LAMMPS *lammps, Compute *fabric_compute, const std::string &prefix);
   ~FabricLocal();
   FabricLocal(const FabricLocal &) = delete;
   FabricLocal &operator=(const FabricLocal &) = delete;
@@ -96,7 +96,8 @@ class FabricLocal : protected Pointers {
   };
 
   Compute *owner; // the compute fabric
-  bool three_d;   // domain->dimension == 3: contacts3(), else contacts()
+  std::string prefix;
+  bool three_d; // domain->dimension == 3: contacts3(), else contacts()
   GranLocalSources sources;
   std::vector<fabric::Contact> local;
   std::vector<fabric::Contact3> local3;

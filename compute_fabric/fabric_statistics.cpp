@@ -5,17 +5,19 @@
 #include <stdexcept>
 #include <string>
 
+#include "math_constants.h"
+
 namespace fabric {
 namespace {
 
-constexpr double kPi = 3.141592653589793238462643383280;
-constexpr double kTwoPi = 2.0 * kPi;
+using math_constants::PI;
+using math_constants::TWO_PI;
 
 // ---- angles -----------------------------------------------------------------
 
 double bin_width(int nbins)
 {
-  return kTwoPi / nbins;
+  return TWO_PI / nbins;
 }
 
 // Orientation of a pi-periodic quantity from its second harmonic
@@ -23,7 +25,7 @@ double bin_width(int nbins)
 Anisotropy from_second_harmonic(double c, double s)
 {
   double theta = 0.5 * std::atan2(s, c);
-  if (theta <= -0.5 * kPi) theta += kPi; // atan2(-0.0, c < 0) = -pi
+  if (theta <= -0.5 * PI) theta += PI; // atan2(-0.0, c < 0) = -pi
   return {std::hypot(c, s), theta};
 }
 
@@ -144,6 +146,15 @@ bool has_normal(const Contact &c)
   return std::isfinite(c.nx) && std::isfinite(c.ny) && (c.nx != 0.0 || c.ny != 0.0);
 }
 
+// fmod is exact, and the identity for |angle| < 2 pi (atan2's range): skipped there
+double wrap_to_full_turn(double angle)
+{
+  double wrapped = std::fabs(angle) < TWO_PI ? angle : std::fmod(angle, TWO_PI);
+  if (wrapped < 0.0) wrapped += TWO_PI;
+  if (wrapped >= TWO_PI) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
+  return wrapped;
+}
+
 double bin_centre(int bin, int nbins)
 {
   return (bin + 0.5) * bin_width(nbins);
@@ -152,10 +163,7 @@ double bin_centre(int bin, int nbins)
 int angle_bin(double angle, int nbins)
 {
   if (!std::isfinite(angle) || nbins < 1) return -1;
-  // fmod is exact, and the identity for |angle| < 2 pi (atan2's range): skip it there
-  double wrapped = std::fabs(angle) < kTwoPi ? angle : std::fmod(angle, kTwoPi);
-  if (wrapped < 0.0) wrapped += kTwoPi;
-  if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
+  const double wrapped = wrap_to_full_turn(angle);
   const int bin = static_cast<int>(wrapped / bin_width(nbins));
   return bin < nbins ? bin : nbins - 1; // wrapped / width can round up to nbins
 }
@@ -267,7 +275,7 @@ ForceAnisotropy force_anisotropy_histogram(const Histogram &h, BinCorrection cor
   const double f0 = sums.f0_numerator / sums.covered_angle;
   if (!(f0 > 0.0)) return result;
 
-  const double scale = bin_correction(bin_width(h.nbins), correction) / (kPi * f0);
+  const double scale = bin_correction(bin_width(h.nbins), correction) / (PI * f0);
   const Anisotropy normal = from_second_harmonic(scale * sums.fn_cos, scale * sums.fn_sin);
   const Anisotropy tangential = from_second_harmonic(-scale * sums.ft_sin, scale * sums.ft_cos);
   result.an = normal.a;

@@ -72,6 +72,10 @@ MissingNormals missing_normals(const std::vector<Contact> &contacts);
 // The centre (bin + 1/2) 2 pi / nbins of a bin, in radians (see angle_bin).
 double bin_centre(int bin, int nbins);
 
+// A finite angle in radians wrapped to [0, 2 pi): fmod's result bit for bit (the
+// angle itself when it is in [0, 2 pi) already, as atan2's are or their + pi).
+double wrap_to_full_turn(double angle);
+
 // The bin among nbins (width 2 pi / nbins, bin 0 from +x) of an angle in radians of
 // any range, wrapped to [0, 2 pi); -1 (no bin) for a NaN or infinite angle or
 // nbins < 1, so a histogram never indexes out of range.

@@ -4,10 +4,12 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "math_constants.h"
+
 namespace fabric {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using math_constants::PI;
 
 // the sums of each struct in one fixed order, for merge / pack / unpack
 template <class F> void each_sum(FabricSums &s, F f)
@@ -65,7 +67,7 @@ Anisotropy major_axis(double xx, double xy, double yy)
 {
   const double c = xx - yy, s = 2.0 * xy;
   double theta = 0.5 * std::atan2(s, c);
-  if (theta <= -0.5 * kPi) theta += kPi; // atan2(-0.0, c < 0) = -pi
+  if (theta <= -0.5 * PI) theta += PI; // atan2(-0.0, c < 0) = -pi
   return {std::hypot(c, s), theta};
 }
 

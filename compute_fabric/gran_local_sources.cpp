@@ -9,25 +9,17 @@
 
 #include "compute.h"
 #include "compute_pair_gran_local.h"
-#include "error.h"
 #include "force.h"
 #include "group.h"
 #include "modify.h"
 #include "update.h"
 
 #include "style_args.h"
+#include "style_error.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
-
-// every message starts so (doc/messages.md)
-const char *const PREFIX = "Compute fabric: ";
-
-std::string msg(const std::string &text)
-{
-  return PREFIX + text;
-}
 
 char *copy_of(const std::string &text)
 {
@@ -38,8 +30,9 @@ char *copy_of(const std::string &text)
 
 } // namespace
 
-GranLocalSources::GranLocalSources(LAMMPS *lammps, Compute *fabric_compute)
-  : Pointers(lammps), owner(fabric_compute)
+GranLocalSources::GranLocalSources(LAMMPS *lammps, Compute *fabric_compute,
+                                   const std::string &prefix_)
+  : Pointers(lammps), owner(fabric_compute), prefix(prefix_)
 {
 }
 
@@ -64,21 +57,21 @@ void GranLocalSources::init(bool with_walls)
 {
   // before the pair/gran/local it creates says so without naming compute fabric
   if (!force->pair)
-    error->all(FLERR, msg("compute " + std::string(owner->id) +
-                          " reads the contacts of the pair style, and there is none; define a "
-                          "granular pair style (e.g. pair_style gran model hertz tangential "
-                          "history) before the run")
-                          .c_str());
+    style_error(lmp, prefix,
+                "compute " + std::string(owner->id) +
+                    " reads the contacts of the pair style, and there is none; define a "
+                    "granular pair style (e.g. pair_style gran model hertz tangential "
+                    "history) before the run");
   init_source(pairs_, "_contacts");
   if (!with_walls) return;
   // (fix_wall_gran.h cannot be included from the Debian headers, so a mesh
   // wall is recognised by the mesh fixes it needs)
   if (modify->n_fixes_style("wall/gran") == 0 || modify->n_fixes_style("mesh/surface") == 0)
-    error->all(FLERR, keyword_message(PREFIX, "walls", "yes",
-                                      "needs a fix wall/gran with mesh walls (LIGGGHTS reports "
-                                      "no contact forces for primitive walls); use mesh walls "
-                                      "(fix mesh/surface and fix wall/gran ... mesh) or walls no")
-                          .c_str());
+    style_error(lmp, prefix,
+                keyword_text("walls", "yes",
+                             "needs a fix wall/gran with mesh walls (LIGGGHTS reports no contact "
+                             "forces for primitive walls); use mesh walls (fix mesh/surface and "
+                             "fix wall/gran ... mesh) or walls no"));
   init_source(walls_, "_walls");
 }
 
@@ -107,18 +100,18 @@ void GranLocalSources::find_source(ContactSource &src)
         std::string("compute ") + c->id + " (" + src.style + ", group " + source_group + ")";
     ComputePairGranLocal *found = static_cast<ComputePairGranLocal *>(c);
     if (found->offset_x1() < 0 || found->offset_id1() < 0 || found->offset_f() < 0)
-      error->all(FLERR, msg(named + " lacks the values pos, id or force that compute " + owner->id +
-                            " (fabric) reads from it; define it as compute " + c->id + " " +
-                            source_group + " " + src.style + " pos id force")
-                            .c_str());
+      style_error(lmp, prefix,
+                  named + " lacks the values pos, id or force that compute " + owner->id +
+                      " (fabric) reads from it; define it as compute " + c->id + " " +
+                      source_group + " " + src.style + " pos id force");
     if (c->igroup != 0 && c->igroup != owner->igroup)
-      error->all(FLERR, msg("compute " + std::string(owner->id) + " (fabric, group " +
-                            fabric_group + ") reads the contacts from " + named +
-                            ", which leaves out the contacts outside group " + source_group +
-                            "; define compute " + c->id +
-                            " in group all: a pair style takes one compute " + src.style +
-                            " and every compute fabric reads it")
-                            .c_str());
+      style_error(lmp, prefix,
+                  "compute " + std::string(owner->id) + " (fabric, group " + fabric_group +
+                      ") reads the contacts from " + named +
+                      ", which leaves out the contacts outside group " + source_group +
+                      "; define compute " + c->id +
+                      " in group all: a pair style takes one compute " + src.style +
+                      " and every compute fabric reads it");
     src.compute = found;
     if (!src.id) src.id = copy_of(c->id);
     return;
@@ -131,10 +124,10 @@ void GranLocalSources::create_source(ContactSource &src, const char *suffix)
   src.id = copy_of(std::string(owner->id) + suffix);
   const int taken = modify->find_compute(src.id);
   if (taken >= 0)
-    error->all(FLERR, msg("compute " + std::string(owner->id) + " (fabric) creates its compute " +
-                          src.style + " as '" + src.id + "', and compute " + src.id + " (" +
-                          modify->compute[taken]->style + ") exists; rename one of them")
-                          .c_str());
+    style_error(lmp, prefix,
+                "compute " + std::string(owner->id) + " (fabric) creates its compute " + src.style +
+                    " as '" + src.id + "', and compute " + src.id + " (" +
+                    modify->compute[taken]->style + ") exists; rename one of them");
 
   char *args[6] = {src.id,        (char *)"all", const_cast<char *>(src.style),
                    (char *)"pos", (char *)"id",  (char *)"force"};

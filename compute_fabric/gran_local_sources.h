@@ -7,6 +7,8 @@
 #ifndef LIGGGHTS_MEMBRANE_GRAN_LOCAL_SOURCES_H
 #define LIGGGHTS_MEMBRANE_GRAN_LOCAL_SOURCES_H
 
+#include <string>
+
 #include "pointers.h"
 
 namespace LAMMPS_NS {
@@ -17,8 +19,9 @@ class ComputePairGranLocal;
 class GranLocalSources : protected Pointers {
  public:
   // `fabric_compute`: the compute fabric they serve (its ID names the computes
-  // created, ID_contacts and ID_walls, and its group the messages)
-  GranLocalSources(LAMMPS *lammps, Compute *fabric_compute);
+  // created, ID_contacts and ID_walls, and its group the messages, which start
+  // with `prefix`, style_prefix())
+  GranLocalSources(LAMMPS *lammps, Compute *fabric_compute, const std::string &prefix);
   ~GranLocalSources();
   GranLocalSources(const GranLocalSources &) = delete;
   GranLocalSources &operator=(const GranLocalSources &) = delete;
@@ -37,6 +40,7 @@ class GranLocalSources : protected Pointers {
   };
 
   Compute *owner;
+  std::string prefix;
   ContactSource pairs_{"pair/gran/local"}, walls_{"wall/gran/local"};
 
   void find_source(ContactSource &src);

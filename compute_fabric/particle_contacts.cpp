@@ -4,12 +4,9 @@
 #include <cmath>
 #include <cstddef>
 
+#include "math_constants.h"
+
 namespace fabric {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846; // M_PI, which strict C++ lacks
-
-} // namespace
 
 std::vector<double> ParticleContacts::angles_of(long tag) const
 {
@@ -31,7 +28,7 @@ ParticleContacts particle_contacts(const std::vector<Contact> &contacts)
     // a contact without a normal counts for both particles but has no angle
     const double theta = has_normal(k) ? std::atan2(k.ny, k.nx) : NAN;
     ends.push_back({k.a, theta});
-    if (k.b >= 0) ends.push_back({k.b, theta + kPi});
+    if (k.b >= 0) ends.push_back({k.b, theta + math_constants::PI});
   }
   std::stable_sort(ends.begin(), ends.end(),
                    [](const End &x, const End &y) { return x.tag < y.tag; });

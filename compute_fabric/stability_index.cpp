@@ -1,5 +1,6 @@
 #include "stability_index.h"
 
+#include "fabric_statistics.h"
 #include "particle_contacts.h"
 
 #include <algorithm>
@@ -7,27 +8,20 @@
 #include <cstddef>
 #include <limits>
 
+#include "math_constants.h"
+
 namespace fabric {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-// fmod is exact and slow; the fast paths below give its result bit for bit
-double wrap_to_full_turn(double angle)
-{
-  double wrapped = std::fabs(angle) < kTwoPi ? angle : std::fmod(angle, kTwoPi);
-  if (wrapped < 0.0) wrapped += kTwoPi;
-  if (wrapped >= kTwoPi) wrapped = 0.0; // -tiny + 2pi can round up to 2pi
-  return wrapped;
-}
+using math_constants::TWO_PI;
 
 double circular_distance(double alpha, double beta)
 {
   // |fmod(x, 2 pi)| = fmod(|x|, 2 pi); for 2 pi <= |x| < 4 pi that is |x| - 2 pi,
   // exact by Sterbenz's lemma (here |x| < 4 pi: both angles in [0, 4 pi))
   double d = std::fabs(alpha - beta);
-  if (d >= kTwoPi) d = d < 2.0 * kTwoPi ? d - kTwoPi : std::fmod(d, kTwoPi);
-  return std::min(d, kTwoPi - d);
+  if (d >= TWO_PI) d = d < 2.0 * TWO_PI ? d - TWO_PI : std::fmod(d, TWO_PI);
+  return std::min(d, TWO_PI - d);
 }
 
 // Misfit of the contacts (sorted, then repeated once: ring[j + n] = ring[j])
@@ -36,7 +30,7 @@ double circular_distance(double alpha, double beta)
 // anchor cannot give the minimum).
 double misfit_from_anchor(const double *ring, std::size_t n, std::size_t anchor, double bound)
 {
-  const double spacing = kTwoPi / static_cast<double>(n);
+  const double spacing = TWO_PI / static_cast<double>(n);
   double total = 0.0;
   for (std::size_t k = 1; k < n && total < bound; ++k) { // k = 0 is the anchor itself
     const double ideal = ring[anchor] + static_cast<double>(k) * spacing;
@@ -84,7 +78,7 @@ double stability_index(const double *angles, std::size_t n)
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t anchor = 0; anchor < m; ++anchor)
     smallest = std::min(smallest, misfit_from_anchor(wrapped, m, anchor, smallest));
-  return smallest / kTwoPi;
+  return smallest / TWO_PI;
 }
 
 double stability_index(const std::vector<double> &angles)

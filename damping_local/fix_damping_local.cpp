@@ -10,8 +10,6 @@
 #include <string>
 
 #include "atom.h"
-#include "comm.h"
-#include "error.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -19,24 +17,19 @@
 #include "damping_order.h"
 #include "local_damping.h"
 #include "style_args.h"
+#include "style_error.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
 
-const std::string PREFIX = "Fix damping/local: ";
 // alpha < 1: a force that drives the motion is reduced to (1 - alpha) of its
 // size, so at 1 nothing would ever accelerate. alpha has no default; PFC's is
 // quoted to the user.
 constexpr double MAX_ALPHA = 1.0;
 constexpr double PFC_ALPHA = 0.7;
 constexpr bool DEFAULT_TORQUE = true;
-
-std::string msg(const std::string &text)
-{
-  return PREFIX + text;
-}
 
 const std::string ALPHA_USAGE = "alpha A, the local damping coefficient, a number >= 0 and < " +
                                 number_text(MAX_ALPHA) + " (PFC's default is " +
@@ -50,7 +43,8 @@ const std::string TORQUE_USAGE =
 /* ---------------------------------------------------------------------- */
 
 FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), alpha(0.0), damp_torque(DEFAULT_TORQUE), damping_force(nullptr)
+  : Fix(lammps, narg, arg), prefix(style_prefix("Fix", style, id)), alpha(0.0),
+    damp_torque(DEFAULT_TORQUE), damping_force(nullptr)
 {
   peratom_flag = 1; // the damping force F_d of the step, per atom
   size_peratom_cols = 3;
@@ -60,7 +54,7 @@ FixDampingLocal::FixDampingLocal(LAMMPS *lammps, int narg, char **arg)
   // without rotational degrees of freedom the default 'torque yes' has nothing to do
   const bool has_rotation = atom->torque_flag && atom->omega_flag;
   bool have_alpha = false, torque_given = false;
-  StyleArgs args(lmp, PREFIX, narg, arg, 3);
+  StyleArgs args(lmp, prefix, narg, arg, 3);
   while (args.more()) {
     const std::string &key = args.keyword();
     if (key == "alpha") {
@@ -112,9 +106,9 @@ int FixDampingLocal::setmask()
 void FixDampingLocal::init()
 {
   if (strstr(update->integrate_style, "verlet") == nullptr)
-    error->all(FLERR, msg(std::string("works with run_style verlet only, not ") +
-                          update->integrate_style + "; use run_style verlet")
-                          .c_str());
+    style_error(lmp, prefix,
+                std::string("works with run_style verlet only, not ") + update->integrate_style +
+                    "; use run_style verlet");
 
   int self = -1;
   for (int i = 0; i < modify->nfix; i++)
@@ -129,9 +123,7 @@ void FixDampingLocal::init()
     MPI_Allreduce(MPI_IN_PLACE, &common, 1, MPI_LONG, MPI_SUM, world);
     if (common == 0) continue;
     warned_order.insert(other->id);
-    if (comm->me == 0)
-      error->warning(
-          FLERR, msg(damping::order_warning(id, style, other->id, other->style, common)).c_str());
+    style_warning(lmp, prefix, damping::order_warning(id, style, other->id, other->style, common));
   }
 }
 

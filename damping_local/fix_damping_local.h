@@ -49,6 +49,7 @@ class FixDampingLocal : public Fix {
   int unpack_exchange(int, double *);
 
  private:
+  const std::string prefix; // of every message: "Fix damping/local (id d): "
   double alpha;
   bool damp_torque;
   double **damping_force;             // F_d of the last step, owned atoms (0 outside the group)

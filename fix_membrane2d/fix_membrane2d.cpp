@@ -9,176 +9,125 @@
 #include "fix_membrane2d.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
+#include <map>
 #include <string>
 
 #include "atom.h"
-#include "comm.h"
-#include "domain.h"
-#include "error.h"
-#include "group.h"
 #include "memory.h"
-#include "modify.h"
 #include "update.h"
 
 #include "contact_scales.h"
-#include "frictionless_type.h"
-#include "membrane_checks.h"
+#include "membrane2d_checks.h"
 #include "membrane_output.h"
 #include "membrane_record.h"
 #include "stability_checks.h"
 #include "style_args.h"
+#include "style_error.h"
 
 using namespace LAMMPS_NS;
-using namespace FixConst;
 using namespace membrane;
 
 namespace {
 
-const char *const PREFIX = "Fix membrane2d: "; // every message starts so (doc/messages.md)
+const MembraneTraits TRAITS{2,
+                            "ylo",
+                            "yhi",
+                            "ylo Y: the bottom platen surface (length), a number or v_name",
+                            "yhi Y: the top platen surface (length), a number or v_name",
+                            "disks",
+                            DEFAULT_TOLERANCE,
+                            MOST_TOLERANCE};
 
-const char *const KEYWORDS[] = {"pressure",  "ylo",       "yhi",   "sides",        "band",
-                                "tolerance", "thickness", "every", "frictionless", "polyline",
-                                "vtk"};
-const char *const USE_PRESSURE =
-    "pressure P: the confining pressure (force/area), a number >= 0 or v_name";
-const char *const USE_YLO = "ylo Y: the bottom platen surface (length), a number or v_name";
-const char *const USE_YHI = "yhi Y: the top platen surface (length), a number or v_name";
 const char *const USE_SIDES = "sides left|right|both";
-const char *const USE_EVERY =
-    "every auto|N: detect when the chain can have changed (auto) or every N >= 1 steps";
 const std::string USE_BAND =
     "band W: the width of the side bands (length), default " + number_text(DEFAULT_BAND) + " x D50";
-const std::string USE_TOLERANCE = "tolerance G: the largest gap (length) counted as a contact, "
-                                  "default " +
-                                  number_text(DEFAULT_TOLERANCE) + " x D50";
+const char *const USE_THICKNESS = "thickness T: the out-of-plane thickness (length), default 1";
 
 } // namespace
 
 /* ---------------------------------------------------------------------- */
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), inputs("ylo", "yhi", USE_PRESSURE, USE_YLO, USE_YHI),
-    frames(lammps, PREFIX),
-    gather(lammps, PREFIX, groupbit), atoms(lammps), d50(0.0), density(0.0), pressure(0.0),
-    ylo(0.0), yhi(0.0), flag_capacity(0)
+  : MembraneFix(lammps, narg, arg, TRAITS), polyline(lammps, prefix),
+    gather(lammps, prefix, groupbit), atoms(lammps)
 {
-  check_atom_setup(lmp, PREFIX);
-
   chains[LEFT].side = Side::Left;
   chains[RIGHT].side = Side::Right;
   chains[LEFT].active = chains[RIGHT].active = true;
-  StyleArgs args(lmp, PREFIX, narg, arg, 3);
-  while (args.more()) {
-    const std::string key = args.keyword();
-    if (inputs.read(args, key)) continue; // pressure, ylo, yhi
+  const std::vector<std::string> own = {"sides", "band", "thickness", "polyline"};
+  parse(narg, arg, own, [&](StyleArgs &args, const std::string &key) {
     if (key == "sides") {
       const int which = args.choice({"left", "right", "both"}, USE_SIDES);
       chains[LEFT].active = which != 1;
       chains[RIGHT].active = which != 0;
     } else if (key == "band") {
       definition.band_given = args.positive(USE_BAND);
-    } else if (key == "tolerance") {
-      definition.tolerance_given = args.non_negative(USE_TOLERANCE);
     } else if (key == "thickness") {
-      definition.thickness =
-          args.positive("thickness T: the out-of-plane thickness (length), default 1");
-    } else if (key == "every") {
-      const char *value = args.value(USE_EVERY);
-      definition.detect_every =
-          strcmp(value, "auto") == 0
-              ? DETECT_AUTO
-              : static_cast<int>(args.to_integer(value, 1, 1000000000L, USE_EVERY));
-    } else if (key == "frictionless") {
-      definition.frictionless_type =
-          static_cast<int>(args.integer(1, atom->ntypes,
-                                        "frictionless T: the atom type chain disks take (its "
-                                        "coefficientFriction with every type is 0)"));
-    } else if (key == "polyline" || key == "vtk") {
-      frames.read(key, args, KEYWORDS, sizeof(KEYWORDS) / sizeof(KEYWORDS[0]));
+      definition.thickness = args.positive(USE_THICKNESS);
+    } else if (key == "polyline") {
+      std::vector<std::string> keywords = own;
+      keywords.insert(keywords.end(), {"pressure", "ylo", "yhi", "tolerance", "every",
+                                       "frictionless", "vtk"});
+      polyline.read(args, keywords);
     } else {
-      std::string keywords;
-      for (const char *k : KEYWORDS) keywords += (keywords.empty() ? "" : ", ") + std::string(k);
-      args.unknown(keywords);
+      return false;
     }
-  }
-  inputs.require(args);
-  definition.sides_mask = sides_mask();
-  atoms.set_frictionless_type(definition.frictionless_type);
+    return true;
+  });
+  definition.sides_mask = (chains[LEFT].active ? 1 : 0) + (chains[RIGHT].active ? 2 : 0);
+  definition.frictionless_type = shared.frictionless;
+  definition.detect_every = shared.every;
+  definition.tolerance_given = shared.tolerance_given;
 
-  vector_flag = 1;
   size_vector = OUTPUT_SIZE;
-  global_freq = 1;
-  extvector = 0;
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
-  restart_global = 1;
-  restart_peratom = 1; // only to give chain disks their frictionless type back after packing
-  atom->add_callback(1);
   vector_atom = nullptr;
   std::fill(vector_values, vector_values + OUTPUT_SIZE, 0.0);
 }
 
 FixMembrane2d::~FixMembrane2d()
 {
-  // after 'unfix' the chain disks are ordinary disks again, with their friction
-  if (atom && atom->type) atoms.restore(chains);
-  if (atom) atom->delete_callback(id, 1);
   memory->destroy(vector_atom);
 }
 
-int FixMembrane2d::setmask()
+std::vector<std::pair<std::string, std::string>> FixMembrane2d::frame_files() const
 {
-  return PRE_FORCE | POST_FORCE;
+  return {{"vtk", vtk.pvd()}, {"polyline", polyline.file()}};
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixMembrane2d::init()
 {
-  inputs.init(lmp, PREFIX);
-  check_frictionless_type(lmp, PREFIX, definition.frictionless_type, style, "chain disks");
-  check_other_membranes(lmp, PREFIX, this, gather);
-
-  // D50 sets the default band width and gap tolerance; with the density, the inertial number
-  const GrainScales grains = group_grain_scales(lmp, groupbit, world);
-  if (grains.empty)
-    error->all(FLERR, (std::string(PREFIX) + "the fix group '" + group->names[igroup] +
-                       "' has no atoms; give it the sample's disks")
-                          .c_str());
-  d50 = grains.d50;
-  density = grains.density;
-  set_lengths(definition, d50, run);
-  check_lengths(lmp, PREFIX, run.band_width, run.tolerance, d50);
+  init_shared();
+  set_lengths(definition, d50, tolerance, run);
+  check_band(lmp, prefix, run.band_width, d50);
   // chain disks are pushed by the membrane on top of their contacts: an
   // unstable chain shows first as escapes
-  check_time_step(lmp, groupbit, world, PREFIX, stability::TIME_STEP_POORLY_RESOLVED, warned_dt);
-}
-
-void FixMembrane2d::evaluate_platens()
-{
-  ylo = inputs.lo.evaluate_checked(lmp, PREFIX, "ylo", false);
-  yhi = inputs.hi.evaluate_checked(lmp, PREFIX, "yhi", false);
-  check_platens_order(lmp, PREFIX, inputs.lo, ylo, yhi);
+  check_time_step(lmp, groupbit, world, prefix, stability::TIME_STEP_POORLY_RESOLVED, warned_dt);
 }
 
 void FixMembrane2d::setup_pre_force(int vflag)
 {
-  evaluate_platens();
-  check_platens_enclose(lmp, PREFIX, gather, inputs.lo, ylo, inputs.hi, yhi);
+  evaluate_inputs();
+  check_platens_enclose(lmp, prefix, gather, inputs.lo, lo, inputs.hi, hi);
   gather.start_traffic(update->ntimestep, run.counters.detections);
   // the chains of the last run (or the restart file) still hold when no disk
   // of the group was created, deleted, renumbered, retyped or moved since
   // (this step's detection, if any, was then done in the last step of that run)
-  const bool kept = state_kept && gather.group_checksum() == run.checksum;
+  const bool kept = state_kept && group_checksum() == run.checksum;
   state_kept = false;
   if (kept) {
     gather_watched();
-    atoms.apply(chains, sides);
-    if (!platens_moved(run, Platens{ylo, yhi}, platen_move_limit(run, d50))) return;
-    run.force_detection = true; // other platens (a restart, a jump): the kept chains the fallback
+    wear_chain_types();
+    // other platens (a restart, a jump) or a step counter set back: detect now, the
+    // kept chains the fallback
+    if (!platens_moved(run, platens(), platen_move_limit(run, d50)) &&
+        update->ntimestep >= run.last_detection)
+      return;
+    run.force_detection = true;
   } else {
     forget_state();
   }
@@ -187,20 +136,19 @@ void FixMembrane2d::setup_pre_force(int vflag)
 
 void FixMembrane2d::forget_state()
 {
-  atoms.restore(chains);
-  atoms.forget();
+  types.restore();
   for (SideChain &s : chains) forget_chain(s);
   for (MembraneSideData &s : sides) s.chain_disks.clear();
   watch_list.clear();
   run.force_detection = true;
 }
 
-// end of a run: every disk gets its own type back (the next run, a
-// write_data, an unfix or a run without this fix see the true sample)
+// end of a run: every disk gets its own type back (the next run, a write_data,
+// an unfix or a run without this fix see the true sample)
 void FixMembrane2d::post_run()
 {
-  atoms.restore(chains);
-  run.checksum = gather.group_checksum();
+  types.restore();
+  run.checksum = group_checksum();
   state_kept = true;
   gather.report_traffic(id, update->ntimestep, run.counters.detections);
 }
@@ -215,31 +163,42 @@ void FixMembrane2d::setup(int vflag)
 void FixMembrane2d::pre_force(int)
 {
   const ScopedSeconds timing(gather.fix_seconds());
-  evaluate_platens();
+  evaluate_inputs();
   const bigint step = update->ntimestep;
-  const bool unwatched = detect_auto() && unwatched_step(run, step);
-  bool detect = run.force_detection || unwatched ||
-                (!detect_auto() && (step % definition.detect_every == 0 ||
-                                    platens_moved(run, Platens{ylo, yhi},
-                                                  platen_move_limit(run, d50))));
+  const bool unwatched = automatic() && unwatched_step(run, step);
+  bool detect = on_any_rank(detection_due());
   if (!detect) {
     gather_watched();
-    detect =
-        detect_auto() &&
-        detection_needed(chains, Platens{ylo, yhi}, Platens{run.ylo_detected, run.yhi_detected},
-                         run.tolerance, watched.band_displacement, WATCH_BUDGET * d50);
+    // from what every rank gathered: the same on every rank
+    detect = automatic() && detection_needed(chains, platens(),
+                                             Platens{run.ylo_detected, run.yhi_detected},
+                                             run.tolerance, watched.band_displacement,
+                                             WATCH_BUDGET * d50);
   }
-  const bool watch = detect_auto() && !unwatched && !count_watched_step(run, step, detect);
+  const bool watch = automatic() && !unwatched && !count_watched_step(run, step, detect);
   if (detect) {
     run.force_detection = false; // detect_chains() sets it again after widening the band
     detect_chains(watch);
-    run.ylo_detected = ylo;
-    run.yhi_detected = yhi;
+    run.last_detection = step;
+    run.ylo_detected = lo;
+    run.yhi_detected = hi;
     build_watch_list(chains, watch, watch_list);
-    gather_watched(); // the new chain's positions and speeds
+    gather_watched(); // the new chain's positions, speeds and types
+    wear_chain_types();
   }
   // after a run or a restart write the chain disks wear their own types
-  if (!atoms.applied()) atoms.apply(chains, sides);
+  if (!types.applied()) wear_chain_types();
+}
+
+// This rank's view of the schedule (on_any_rank makes it every rank's): a forced
+// detection, the schedule of the shared keyword every, a dense every-auto window,
+// with every N platens moved beyond the tolerance.
+bool FixMembrane2d::detection_due()
+{
+  const bigint step = update->ntimestep;
+  return run.force_detection || detection_scheduled(shared, step, run.last_detection) ||
+         (automatic() && unwatched_step(run, step)) ||
+         (!automatic() && platens_moved(run, platens(), platen_move_limit(run, d50)));
 }
 
 // A band narrower than the sample's surface roughness can cut every contact
@@ -253,8 +212,7 @@ void FixMembrane2d::detect_chains(bool watch_it)
   run.counters.detections++;
   bool pending[2] = {chains[LEFT].active, chains[RIGHT].active};
   const bool active[2] = {chains[LEFT].active, chains[RIGHT].active};
-  const Platens platens{ylo, yhi};
-  const WatchSettings watch{platens, run.tolerance, WATCH_BUDGET * d50};
+  const WatchSettings watch{platens(), run.tolerance, WATCH_BUDGET * d50};
   double width = run.search_width;
   ChainResult results[2];
   for (int attempt = 0; attempt <= MAX_WIDENINGS && (pending[LEFT] || pending[RIGHT]); attempt++) {
@@ -262,8 +220,8 @@ void FixMembrane2d::detect_chains(bool watch_it)
       width = widened_band(width, d50);
       run.counters.widenings++;
     }
-    gather.bands(platens, width, active, sides);
-    gather.search(finder, sides, pending, platens, run.tolerance, results);
+    gather.bands(platens(), width, active, sides);
+    gather.search(finder, sides, pending, platens(), run.tolerance, results);
     for (int k = LEFT; k <= RIGHT; k++) {
       if (!pending[k]) continue;
       if (!results[k].ok) {
@@ -272,12 +230,10 @@ void FixMembrane2d::detect_chains(bool watch_it)
       }
       pending[k] = false;
       SideChain &s = chains[k];
-      const std::vector<long> old_tags = s.chain_tags.empty() ? s.forgotten_tags : s.chain_tags;
       // how often a detection changes anything: what skipping detections would risk
       if (accept_chain(s, sides[k].band, results[k], watch_it ? &watch : nullptr))
         run.counters.changes++;
-      if (detect_auto() && !watch_it) drop_watch(s);
-      atoms.change_chain(old_tags, s.chain_tags, results[k].chain, sides[k]);
+      if (automatic() && !watch_it) drop_watch(s);
     }
   }
   if (width > run.search_width) {
@@ -293,31 +249,49 @@ void FixMembrane2d::chain_lost(int k, const std::string &why)
   s.watch.always = true; // search again at the next step
   const std::string where =
       std::string(side_name(k)) + " side at step " + std::to_string(update->ntimestep);
-  if (s.chain_tags.empty()) error->all(FLERR, (PREFIX + no_chain_error(where, why)).c_str());
-  if (!s.warned_lost && comm->me == 0)
-    error->warning(FLERR, (PREFIX + chain_lost_warning(where, why)).c_str());
+  if (s.chain_tags.empty()) fail(no_chain_error(where, why));
+  if (!s.warned_lost) warn(chain_lost_warning(where, why));
   s.warned_lost = true;
 }
 
 void FixMembrane2d::gather_watched()
 {
-  watched = gather.watched(watch_list, chains, detect_auto(), sides);
+  watched = gather.watched(watch_list, chains, automatic(), sides);
+}
+
+// The chain disks of both sides (gathered this step with their types) wear the
+// frictionless type, the disks that left the chains their own.
+void FixMembrane2d::wear_chain_types()
+{
+  if (types.type() <= 0) return;
+  std::map<AtomId, int> on;
+  for (const MembraneSideData &s : sides)
+    for (std::size_t c = 0; c < s.chain_disks.size(); c++)
+      on.emplace(static_cast<AtomId>(s.chain_disks[c].tag), s.chain_types[c]);
+  std::vector<AtomId> tags;
+  std::vector<int> now;
+  for (const auto &disk : on) {
+    tags.push_back(disk.first);
+    now.push_back(disk.second);
+  }
+  types.wear(tags, now);
 }
 
 void FixMembrane2d::post_force(int)
 {
   const ScopedSeconds timing(gather.fix_seconds());
-  pressure = inputs.pressure.evaluate_checked(lmp, PREFIX, "pressure", true);
   // positions of the chain disks: gathered in pre_force (they do not move in between)
   for (int k = LEFT; k <= RIGHT; k++)
     if (chains[k].active)
-      load_side(sides[k].chain_disks, chains[k].side, Platens{ylo, yhi}, pressure,
-                definition.thickness, loads[k]);
+      load_side(sides[k].chain_disks, chains[k].side, platens(), pressure, definition.thickness,
+                loads[k]);
   atoms.add_forces(chains, sides, loads, pressure, definition.thickness);
   check_stability();
   atoms.flags(chains, vector_atom, flag_capacity);
-  output_vector(chains, loads, run, Platens{ylo, yhi}, pressure, watched.chain_step, vector_values);
-  frames.write(update->ntimestep, chains, sides, loads);
+  output_vector(chains, loads, run, platens(), pressure, watched.chain_step, vector_values);
+  const bigint step = update->ntimestep;
+  polyline.write(step, chains, sides, loads);
+  if (vtk.due(step)) vtk.write(step, chains_vtk_frame(chains, sides, loads));
 }
 
 // the chain disks' step (bench/stability_sweep.md) and the inertial number
@@ -327,43 +301,25 @@ void FixMembrane2d::check_stability()
   const bigint step = update->ntimestep;
   if (watched.chain_step > CHAIN_STEP_LIMIT && !run.warned_chain_step) {
     run.warned_chain_step = true;
-    if (comm->me == 0)
-      error->warning(
-          FLERR,
-          (PREFIX + chain_step_warning(watched.chain_step_tag, watched.chain_step, step)).c_str());
+    warn(chain_step_warning(watched.chain_step_tag, watched.chain_step, step));
   }
   // p = the membrane pressure, the smaller principal stress: I is an upper bound
   const double limit = stability::INERTIAL_QUASI_STATIC;
-  if (run.inertial.update(step, yhi - ylo, update->dt, INERTIAL_WINDOW, d50, density, pressure,
+  if (run.inertial.update(step, hi - lo, update->dt, INERTIAL_WINDOW, d50, density, pressure,
                           limit) &&
       !run.warned_inertial) {
     run.warned_inertial = true;
-    if (comm->me == 0)
-      error->warning(
-          FLERR,
-          (PREFIX + inertial_warning(run.inertial, limit, step, d50, density, pressure)).c_str());
+    warn(inertial_warning(run.inertial, limit, step, d50, density, pressure));
   }
 }
 
-// restart: see fix_membrane2d.h
+// restart: see fix_membrane2d.h and membrane/membrane_fix.h
 void FixMembrane2d::write_restart(FILE *fp)
 {
-  atoms.restore_for_restart(chains);
+  types.restore_for_restart();
   membrane::RunState saved = run;
-  saved.checksum = gather.group_checksum();
-  const std::vector<double> rec = write_record(definition, saved, chains);
-  if (comm->me == 0) {
-    const int size = static_cast<int>(rec.size() * sizeof(double));
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(rec.data(), sizeof(double), rec.size(), fp);
-  }
-}
-
-int FixMembrane2d::pack_restart(int i, double *buf)
-{
-  atoms.packed(i); // called after LIGGGHTS packed atom i with its own type
-  buf[0] = 1;
-  return 1;
+  saved.checksum = group_checksum();
+  write_record(fp, membrane::write_record(definition, saved, chains));
 }
 
 void FixMembrane2d::restart(char *raw)
@@ -372,13 +328,13 @@ void FixMembrane2d::restart(char *raw)
   const std::string why =
       read_record(reinterpret_cast<const double *>(raw), static_cast<size_t>(-1) / sizeof(double),
                   definition, same, run, chains);
-  if (!why.empty()) error->all(FLERR, (PREFIX + restart_unreadable(id, why, !same)).c_str());
+  if (!why.empty()) fail(restart_unreadable(id, why, !same));
   if (!same) {
-    if (comm->me == 0) error->warning(FLERR, (PREFIX + restart_other_definition(id)).c_str());
+    warn(restart_other_definition(id));
     return;
   }
   state_kept = true;
-  build_watch_list(chains, detect_auto(), watch_list);
+  build_watch_list(chains, automatic(), watch_list);
 }
 
 double FixMembrane2d::memory_usage()
@@ -386,6 +342,5 @@ double FixMembrane2d::memory_usage()
   double bytes = flag_capacity * sizeof(double);
   for (const MembraneSideData &s : sides)
     bytes += s.band.capacity() * sizeof(Disk) + s.chain_disks.capacity() * sizeof(Disk);
-  bytes += atoms.memory_usage();
-  return bytes;
+  return bytes + types.memory_usage();
 }

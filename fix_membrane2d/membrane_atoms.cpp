@@ -7,66 +7,6 @@
 
 using membrane::SideChain;
 
-void MembraneAtoms::change_chain(const std::vector<long> &old_tags,
-                                 const std::vector<long> &new_tags, const std::vector<int> &chain,
-                                 const MembraneSideData &side)
-{
-  if (type_ <= 0) return;
-  for (int idx : chain)
-    if (side.band_type[idx] != type_) own_type_[side.band[idx].tag] = side.band_type[idx];
-  switch_types(old_tags, new_tags);
-}
-
-void MembraneAtoms::apply(const SideChain (&chains)[2], const MembraneSideData (&sides)[2])
-{
-  applied_ = true;
-  if (type_ <= 0) return;
-  for (const MembraneSideData &s : sides)
-    for (std::size_t c = 0; c < s.chain_disks.size(); c++)
-      if (s.chain_types[c] != type_) own_type_.emplace(s.chain_disks[c].tag, s.chain_types[c]);
-  for (const SideChain &s : chains) switch_types({}, s.chain_tags);
-}
-
-void MembraneAtoms::restore(const SideChain (&chains)[2])
-{
-  if (applied_ && type_ > 0)
-    for (const SideChain &s : chains) switch_types(s.chain_tags, {});
-  applied_ = false;
-}
-
-void MembraneAtoms::restore_for_restart(const SideChain (&chains)[2])
-{
-  const int nlocal = atom->nlocal;
-  restored_.assign(nlocal, 0);
-  if (applied_ && type_ > 0)
-    for (const SideChain &s : chains)
-      for (long tag : s.chain_tags) {
-        const int i = atom->map(static_cast<int>(tag));
-        const auto it = own_type_.find(tag);
-        if (i < 0 || i >= nlocal || it == own_type_.end() || atom->type[i] != type_) continue;
-        atom->type[i] = it->second;
-        restored_[i] = 1;
-      }
-  applied_ = false; // pre_force switches the disks a region write skipped
-}
-
-void MembraneAtoms::packed(int i)
-{
-  if (i < static_cast<int>(restored_.size()) && restored_[i]) {
-    atom->type[i] = type_;
-    restored_[i] = 0;
-  }
-}
-
-void MembraneAtoms::switch_types(const std::vector<long> &old_tags,
-                                 const std::vector<long> &new_tags)
-{
-  if (type_ <= 0) return;
-  for (const auto &change : membrane::type_changes(old_tags, new_tags, own_type_, type_))
-    for (int i = atom->map(static_cast<int>(change.first)); i >= 0; i = atom->sametag[i])
-      atom->type[i] = change.second;
-}
-
 void MembraneAtoms::add_forces(const SideChain (&chains)[2], const MembraneSideData (&sides)[2],
                                const membrane::SideLoad (&loads)[2], double pressure,
                                double thickness)
@@ -111,9 +51,4 @@ void MembraneAtoms::flags(const SideChain (&chains)[2], double *&flag, int &capa
     for (long tag : chains[k].chain_tags) mark(tag, k == membrane::LEFT ? LEFT_CHAIN : RIGHT_CHAIN);
     for (long tag : chains[k].escaped_tags) mark(tag, ESCAPEE);
   }
-}
-
-double MembraneAtoms::memory_usage() const
-{
-  return own_type_.size() * (sizeof(long) + sizeof(int) + 32) + restored_.capacity();
 }

@@ -20,8 +20,8 @@ double empty_extent(Side side)
 void BandSlices::reset(Side side, Platens platens, double h)
 {
   side_ = side;
-  ylo_ = platens.ylo;
-  const double span = platens.yhi - platens.ylo;
+  ylo_ = platens.lo;
+  const double span = platens.hi - platens.lo;
   h_ = (h > 0.0 && std::isfinite(h)) ? h : std::max(span, 1.0);
   inv_h_ = 1.0 / h_;
   long n = (span > 0.0 && std::isfinite(span)) ? static_cast<long>(std::ceil(span / h_)) : 1;

@@ -242,7 +242,7 @@ void ChainFinder::find(const std::vector<Disk> &disks, Side side, Platens platen
   walked_.clear();
 
   const int n = static_cast<int>(disks.size());
-  if (!(platens.yhi > platens.ylo)) {
+  if (!(platens.hi > platens.lo)) {
     out.failure = "top platen is not above the bottom platen";
     return;
   }
@@ -303,7 +303,7 @@ void ChainFinder::find(const std::vector<Disk> &disks, Side side, Platens platen
     if (pruned_[i]) {
       out.escaped.push_back(i);
       ++out.pruned;
-    } else if (finite_disk(d) && d.y > platens.ylo && d.y < platens.yhi &&
+    } else if (finite_disk(d) && d.y > platens.lo && d.y < platens.hi &&
                outside_binned(d.x, d.y, out.polyline, side)) {
       out.escaped.push_back(i);
     }
@@ -315,8 +315,8 @@ void ChainFinder::bin_segments(const Polyline &pl, Platens platens, double bin_h
   // Testing every band disk against every segment would be O(n x chain);
   // horizontal slabs make the escapee test O(n + chain).
   const std::size_t nseg = pl.empty() ? 0 : pl.size() - 1;
-  bin_lo_ = platens.ylo;
-  const double span = platens.yhi - platens.ylo;
+  bin_lo_ = platens.lo;
+  const double span = platens.hi - platens.lo;
   double nb = bin_height > 0.0 ? std::ceil(span / bin_height) : 1.0;
   nb = std::clamp(nb, 1.0, 4.0 * static_cast<double>(nseg) + 16.0);
   nbin_ = static_cast<int>(nb);
@@ -386,7 +386,7 @@ void polyline_from_chain(const std::vector<Disk> &disks, const std::vector<int> 
 {
   out.clear();
   if (chain.empty()) return;
-  out.emplace_back(disks[chain.front()].x, platens.ylo);
+  out.emplace_back(disks[chain.front()].x, platens.lo);
   for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
     const Disk &a = disks[chain[k]];
     const Disk &b = disks[chain[k + 1]];
@@ -395,7 +395,7 @@ void polyline_from_chain(const std::vector<Disk> &disks, const std::vector<int> 
     const double f = rs > 0.0 ? a.r / rs : 0.5;
     out.emplace_back(a.x + f * (b.x - a.x), a.y + f * (b.y - a.y));
   }
-  out.emplace_back(disks[chain.back()].x, platens.yhi);
+  out.emplace_back(disks[chain.back()].x, platens.hi);
 }
 
 Polyline polyline_from_chain(const std::vector<Disk> &disks, const std::vector<int> &chain,

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "platens.h"
+
 namespace membrane {
 
 enum class Side { Left, Right };
@@ -22,9 +24,6 @@ struct Disk {
   double x, y, r;
 };
 
-struct Platens {
-  double ylo, yhi; // bottom and top platen surfaces
-};
 
 using Polyline = std::vector<Eigen::Vector2d>;
 
@@ -114,11 +113,11 @@ inline bool link_from(const Disk &a, const Disk &b, double tol)
 }
 inline bool touches_bottom(const Disk &d, Platens p, double tol)
 {
-  return d.y - d.r - p.ylo <= tol;
+  return d.y - d.r - p.lo <= tol;
 }
 inline bool touches_top(const Disk &d, Platens p, double tol)
 {
-  return p.yhi - (d.y + d.r) <= tol;
+  return p.hi - (d.y + d.r) <= tol;
 }
 
 // When may a detection be skipped? A ChainFinder result depends only on (i) the

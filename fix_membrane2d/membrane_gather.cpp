@@ -14,7 +14,7 @@
 
 #include "allgather.h"
 #include "atom_faults.h"
-#include "group_checksum.h"
+#include "style_error.h"
 #include "membrane_output.h"
 #include "membrane_record.h"
 #include "stability_checks.h"
@@ -101,7 +101,7 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
   }
   for (int k = LEFT; k <= RIGHT; k++)
     if (active[k] && sides[k].band.empty())
-      error->all(FLERR, (prefix_ + "no atoms in the " + membrane::side_name(k) + " band").c_str());
+      style_error(lmp, prefix_, std::string("no atoms in the ") + membrane::side_name(k) + " band");
 }
 
 // The slices' extents over the n disks local_index(0..n-1), merged over the ranks.
@@ -191,7 +191,8 @@ void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideDat
     traffic_.detection_bytes += sizeof(int) * (1.0 + size);
     if (comm->me != owner(k) &&
         !membrane::unpack_result(result_buf_.data(), result_buf_.size(), results[k]))
-      error->one(FLERR, (prefix_ + "internal error: a broadcast chain search is corrupt").c_str());
+      style_error_one(lmp, prefix_, "a broadcast chain search is corrupt; this is a fault of "
+                                    "fix membrane2d; please report it with the input script");
   }
 }
 
@@ -262,22 +263,22 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
 
   const std::string step = std::to_string(update->ntimestep);
   if (recv_.size() != WATCH_FIELDS * (list.size() + comm->nprocs))
-    error->all(FLERR, (prefix_ + "a chain, escaped or band disk was lost at step " + step +
-                       " (it left the box, or its position became infinite or NaN under an infinite "
-                       "force; 'thermo_modify lost ignore' hides this): the membrane "
-                       "cannot hold a sample whose outer disks fly off; check the time step, the "
-                       "pressure and the platens")
-                          .c_str());
+    style_error(lmp, prefix_,
+                "a chain, escaped or band disk was lost at step " + step +
+                    " (it left the box, or its position became infinite or NaN under an infinite "
+                    "force; 'thermo_modify lost ignore' hides this): the membrane cannot hold a "
+                    "sample whose outer disks fly off; check the time step, the pressure and the "
+                    "platens");
   bool finite = true;
   for (double v : recv_) finite = finite && std::isfinite(v);
   if (!finite) {
     // every rank holds recv_: all come here, and find the atom together
     const std::string fault = group_atom_fault(lmp, groupbit_, 2);
-    error->all(FLERR, (prefix_ + (fault.empty() ? "a chain particle position is not finite at "
-                                                  "step " + step + ": the run has gone unstable; "
-                                                  "reduce the time step or the loading rate"
-                                                : fault))
-                          .c_str());
+    style_error(lmp, prefix_,
+                fault.empty() ? "a chain particle position is not finite at step " + step +
+                                    ": the run has gone unstable; reduce the time step or the "
+                                    "loading rate"
+                              : fault);
   }
   for (int k = LEFT; k <= RIGHT; k++) {
     sides[k].chain_disks.resize(chains[k].active ? chains[k].chain_tags.size() : 0);
@@ -352,11 +353,6 @@ double MembraneGather::gathered_bytes() const
          sizeof(int) * static_cast<double>(counts_.size());
 }
 
-std::uint64_t MembraneGather::group_checksum()
-{
-  return ::group_checksum(lmp, groupbit_, 2);
-}
-
 void MembraneGather::group_y_range(double &lo, double &hi)
 {
   double local[2] = {1e300, -1e300};
@@ -367,13 +363,4 @@ void MembraneGather::group_y_range(double &lo, double &hi)
   }
   MPI_Allreduce(&local[0], &lo, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(&local[1], &hi, 1, MPI_DOUBLE, MPI_MAX, world);
-}
-
-bigint MembraneGather::shared_disks(int otherbit)
-{
-  bigint shared = 0, total = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit_) && (atom->mask[i] & otherbit)) shared++;
-  MPI_Allreduce(&shared, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  return total;
 }

@@ -79,12 +79,8 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   void report_traffic(const char *id, LAMMPS_NS::bigint step, long long detections);
   double &fix_seconds() { return traffic_.fix_seconds; }
 
-  // Order-free hash of the group's disks (tag, type, position, radius).
-  std::uint64_t group_checksum();
   // Lowest and highest disk centre of the group.
   void group_y_range(double &lo, double &hi);
-  // Disks of the group that are also in the group of `otherbit`.
-  LAMMPS_NS::bigint shared_disks(int otherbit);
 
  private:
   std::string prefix_;

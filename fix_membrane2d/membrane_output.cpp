@@ -28,17 +28,6 @@ std::string band_problem(double band, double d50)
          g(DEFAULT_BAND) + " x D50 = " + g(DEFAULT_BAND * d50) + ")";
 }
 
-std::string tolerance_problem(double tolerance, double d50)
-{
-  if (!(tolerance > TOLERANCE_MAX * d50)) return "";
-  char buf[512];
-  std::snprintf(buf, sizeof(buf),
-                "is %.3g x D50 (D50 = %g); it is the largest gap counted as a contact, a length "
-                "in distance units, at most %g x D50; typically %g x D50 = %g (the default)",
-                tolerance / d50, d50, TOLERANCE_MAX, DEFAULT_TOLERANCE, DEFAULT_TOLERANCE * d50);
-  return buf;
-}
-
 std::string chain_step_warning(long tag, double fraction, long long step)
 {
   char buf[512];
@@ -71,9 +60,9 @@ void output_vector(const SideChain (&chains)[2], const SideLoad (&loads)[2], con
   const SideChain &l = chains[LEFT], &r = chains[RIGHT];
   if (l.active && r.active) {
     v[AREA] = sample_area(loads[LEFT].polyline, loads[RIGHT].polyline);
-    v[MEAN_WIDTH] = v[AREA] / (platens.yhi - platens.ylo);
+    v[MEAN_WIDTH] = v[AREA] / (platens.hi - platens.lo);
     v[MID_WIDTH] =
-        width_at(0.5 * (platens.ylo + platens.yhi), loads[LEFT].polyline, loads[RIGHT].polyline);
+        width_at(0.5 * (platens.lo + platens.hi), loads[LEFT].polyline, loads[RIGHT].polyline);
   }
   v[CHAIN_LEFT] = l.active ? static_cast<double>(l.chain_tags.size()) : 0.0;
   v[CHAIN_RIGHT] = r.active ? static_cast<double>(r.chain_tags.size()) : 0.0;

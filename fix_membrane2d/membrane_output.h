@@ -46,7 +46,6 @@ inline const char *side_name(int k)
 // Why the band width or the gap tolerance (lengths) cannot be used with this
 // D50; "" when they can.
 std::string band_problem(double band, double d50);
-std::string tolerance_problem(double tolerance, double d50);
 
 // The warnings of the stability guards (warned once per run).
 std::string chain_step_warning(long tag, double fraction, long long step);

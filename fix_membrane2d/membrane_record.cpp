@@ -66,6 +66,7 @@ std::vector<double> write_record(const Definition &def, const RunState &run,
   out.put(static_cast<double>(run.dense.window_steps));
   out.put(static_cast<double>(run.dense.window_detections));
   out.put(static_cast<double>(run.dense.unwatched_until));
+  out.put(static_cast<double>(run.last_detection));
   return out.finish();
 }
 
@@ -73,7 +74,10 @@ std::string read_record(const double *data, std::size_t n, const Definition &def
                         bool &same_definition, RunState &run, SideChain (&sides)[2])
 {
   RestartRecordReader in = record_reader(data, n);
-  same_definition = in.ok() && get_definition(in) == def;
+  Definition written = get_definition(in);
+  // every N of format 3 and before detected on multiples of N: another definition
+  if (in.version() < 4 && written.detect_every != EVERY_AUTO) written.detect_every *= -1;
+  same_definition = in.ok() && written == def;
   if (!in.ok() || !same_definition) return in.error();
   const std::uint64_t hi = static_cast<std::uint64_t>(in.get()),
                       lo = static_cast<std::uint64_t>(in.get());
@@ -108,6 +112,8 @@ std::string read_record(const double *data, std::size_t n, const Definition &def
     run.dense.window_detections = static_cast<long long>(in.get());
     run.dense.unwatched_until = static_cast<long long>(in.get());
   }
+  // before format 4 the step of the last detection is unknown: found again
+  run.last_detection = in.version() >= 4 ? static_cast<long long>(in.get()) : -1;
   in.finished();
   return in.error();
 }

@@ -15,7 +15,9 @@
 namespace membrane {
 
 constexpr double RECORD_MAGIC = 7.0e9 + 2213.0; // not a count a version-1 record starts with
-constexpr int RECORD_VERSION = 3;        // 3: the every-auto detection window (RunState)
+// 3: the every-auto detection window (RunState); 4: the step of the last detection
+// (every N counts from it)
+constexpr int RECORD_VERSION = 4;
 constexpr int RECORD_OLDEST_VERSION = 2; // read too: no window yet
 
 inline RestartRecordWriter record_writer()

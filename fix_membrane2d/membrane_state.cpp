@@ -1,6 +1,6 @@
 #include "membrane_state.h"
 
-#include "platen_motion.h"
+#include "platens.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +55,7 @@ bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens det
                       double tolerance, double band_displacement, double budget)
 {
   const double platen_move =
-      std::max(std::fabs(platens.ylo - detected.ylo), std::fabs(platens.yhi - detected.yhi));
+      std::max(std::fabs(platens.lo - detected.lo), std::fabs(platens.hi - detected.hi));
   if (2.0 * band_displacement >= budget || band_displacement + platen_move >= budget) return true;
   for (const SideChain &s : chains)
     if (s.active && watched_relation_changed(s.watch, s.now, s.side, platens, tolerance))
@@ -70,7 +70,7 @@ double widened_band(double width, double d50)
 
 bool platens_moved(const RunState &run, Platens now, double limit)
 {
-  return platens_moved_beyond(now.ylo, now.yhi, run.ylo_detected, run.yhi_detected, limit);
+  return platens_moved_beyond(now, Platens{run.ylo_detected, run.yhi_detected}, limit);
 }
 
 double platen_move_limit(const RunState &run, double d50)
@@ -99,11 +99,11 @@ void drop_watch(SideChain &s)
   s.now.clear();
 }
 
-void set_lengths(const Definition &def, double d50, RunState &run)
+void set_lengths(const Definition &def, double d50, double tolerance, RunState &run)
 {
   run.band_width = def.band_given > 0.0 ? def.band_given : DEFAULT_BAND * d50;
   if (run.search_width <= 0.0) run.search_width = run.band_width;
-  run.tolerance = def.tolerance_given >= 0.0 ? def.tolerance_given : DEFAULT_TOLERANCE * d50;
+  run.tolerance = tolerance;
 }
 
 void build_watch_list(const SideChain (&sides)[2], bool watch_relations,
@@ -149,25 +149,6 @@ void build_watch_list(const SideChain (&sides)[2], bool watch_relations,
     }
   }
   out.resize(n);
-}
-
-std::vector<std::pair<long, int>> type_changes(const std::vector<long> &old_tags,
-                                               const std::vector<long> &new_tags,
-                                               const std::map<long, int> &own_type,
-                                               int frictionless_type)
-{
-  std::vector<long> joining = new_tags;
-  std::sort(joining.begin(), joining.end());
-  std::vector<std::pair<long, int>> out;
-  for (long tag : old_tags)
-    if (!std::binary_search(joining.begin(), joining.end(), tag)) {
-      const auto it = own_type.find(tag);
-      if (it != own_type.end()) out.emplace_back(tag, it->second);
-    }
-  for (long tag : joining) out.emplace_back(tag, frictionless_type);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
 }
 
 namespace {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dense_detections.h"
+#include "shared_keywords.h"
 
 #include "membrane_chain.h"
 
@@ -24,7 +25,7 @@ enum { LEFT = 0, RIGHT = 1 }; // index of a side in the arrays below
 constexpr double DEFAULT_BAND = 4.0;       // band width, x D50
 constexpr double BAND_MIN = 0.01;          // x D50: narrower bands are cut into too many slices
 constexpr double DEFAULT_TOLERANCE = 0.02; // gap tolerance, x D50
-constexpr double TOLERANCE_MAX = 0.25;     // x D50: wider ones bridge real gaps between disks
+constexpr double MOST_TOLERANCE = 0.25;    // x D50: wider ones bridge real gaps between disks
 // a failed search is repeated with the band widened by this factor, at most this often
 constexpr double BAND_WIDENING = 2.5;
 constexpr int MAX_WIDENINGS = 2;
@@ -80,9 +81,9 @@ bool accept_chain(SideChain &s, const std::vector<Disk> &band, const ChainResult
 bool detection_needed(const SideChain (&chains)[2], Platens platens, Platens detected,
                       double tolerance, double band_displacement, double budget);
 
-// The band width, search width and gap tolerance of a run: as given, else
-// the defaults for this D50; a search width already widened is kept.
-void set_lengths(const struct Definition &def, double d50, struct RunState &run);
+// The band width and search width of a run (as given, else the default for this
+// D50; a search width already widened is kept) and its gap `tolerance`.
+void set_lengths(const struct Definition &def, double d50, double tolerance, struct RunState &run);
 
 // A disk whose position every rank gathers at every step, with its roles.
 struct WatchEntry {
@@ -96,14 +97,6 @@ struct WatchEntry {
 // disk whatever its roles. `out` is reused (no allocation once grown).
 void build_watch_list(const SideChain (&sides)[2], bool watch_relations,
                       std::vector<WatchEntry> &out);
-
-// The types to set when a chain goes from `old_tags` to `new_tags`: a disk
-// that leaves takes its own type back (when `own_type` knows it), every disk
-// of the new chain the frictionless type. Sorted by tag.
-std::vector<std::pair<long, int>> type_changes(const std::vector<long> &old_tags,
-                                               const std::vector<long> &new_tags,
-                                               const std::map<long, int> &own_type,
-                                               int frictionless_type);
 
 // A chain search result as ints, so that the rank that ran it can broadcast
 // it; unpack_result returns false when `data` does not hold one.
@@ -139,14 +132,11 @@ struct SideLoad {
 void load_side(const std::vector<Disk> &chain, Side side, Platens platens, double pressure,
                double thickness, SideLoad &out);
 
-// every auto: detect when the chain can have changed (detection_needed)
-constexpr int DETECT_AUTO = 0;
-
 // How the fix was defined: a restart is used only by the same definition.
 struct Definition {
   int sides_mask = 3; // 1 left, 2 right
   int frictionless_type = 0;
-  int detect_every = DETECT_AUTO; // steps between detections, or DETECT_AUTO
+  int detect_every = EVERY_AUTO; // steps between detections, or EVERY_AUTO
   double band_given = -1.0, tolerance_given = -1.0, thickness = 1.0;
   bool operator==(const Definition &o) const
   {
@@ -168,6 +158,7 @@ struct RunState {
   double search_width = 0.0;  // of the next search: band_width, or wider once widened
   double tolerance = 0.0;
   bool force_detection = true;
+  long long last_detection = -1; // its step (every N counts from it)
   double ylo_detected = 0.0, yhi_detected = 0.0; // the platens at the last detection
   Counters counters;
   InertialWindow inertial;

@@ -71,7 +71,7 @@ void watch_detection(const std::vector<Disk> &band, const ChainResult &r, Platen
   const Disk &start = band[r.chain.front()];
   for (int i = 0; i < n; ++i) {
     const Disk &d = band[i];
-    const double bottom_gap = d.y - d.r - platens.ylo, top_gap = platens.yhi - (d.y + d.r);
+    const double bottom_gap = d.y - d.r - platens.lo, top_gap = platens.hi - (d.y + d.r);
     if (std::abs(bottom_gap - tol) < budget)
       out.platen_contacts.push_back({i, true, touches_bottom(d, platens, tol)});
     if (std::abs(top_gap - tol) < budget)

@@ -8,7 +8,9 @@ namespace membrane3d {
 
 namespace {
 const double MAGIC = 3.0e7 + 3;  // fix membrane3d's records, not membrane2d's
-const int VERSION = 4; // 2: the detection's spheres; 3: the decided step; 4: the platens, the checksum
+// 2: the detection's spheres; 3: the decided step; 4: the platens, the checksum;
+// 5: the default tolerance is a multiple of D50 (before: of the mean diameter)
+const int VERSION = 5;
 } // namespace
 
 std::vector<double> write_record(const Membrane3dState &s) {
@@ -99,6 +101,8 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
     const auto hi = static_cast<std::uint64_t>(r.get()), lo = static_cast<std::uint64_t>(r.get());
     in.checksum = (hi << 32) | lo;
   }
+  // a default tolerance of another definition: not this fix's default
+  if (r.version() < 5 && in.tolerance_given < 0) in.tolerance_given = MEAN_DIAMETER_DEFAULT;
   if (!r.finished()) return r.error();
   s = in;
   return "";

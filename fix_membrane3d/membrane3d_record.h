@@ -16,9 +16,13 @@
 
 namespace membrane3d {
 
+// tolerance_given of a record before version 5 that took the default, then a
+// multiple of the mean diameter: a definition other than any of this version
+constexpr double MEAN_DIAMETER_DEFAULT = -2.0;
+
 struct Membrane3dState {
   double tolerance_given = -1;  // as given, -1 for the default
-  int every = 1;
+  int every = 0; // 0: every auto
   double last_detection = -1;   // step
   double decided_step = -1;     // the last step whose detection was decided (version 3)
   double detections = 0;

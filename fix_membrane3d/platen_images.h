@@ -6,7 +6,7 @@
 #define LIGGGHTS_MEMBRANE_PLATEN_IMAGES_H
 
 #include "exterior_flood.h"
-#include "platen_motion.h"
+#include "platens.h"
 
 #include <Eigen/Core>
 
@@ -14,15 +14,13 @@
 
 namespace membrane3d {
 
-struct Platens {
-  double lo, hi; // z of the lower and upper platen
-};
+using membrane::Platens; // lo, hi: z of the lower and upper platen
 
 // Whether a platen of `now` is more than `tolerance` from where it was `then` (NaN:
 // unknown, not moved): the links of the spheres with their images can have changed.
 inline bool moved_apart(const Platens &now, const Platens &then, double tolerance)
 {
-  return platens_moved_beyond(now.lo, now.hi, then.lo, then.hi, tolerance);
+  return platens_moved_beyond(now, then, tolerance);
 }
 
 // x, or its mirror image in the lower (image -1) or upper (+1) platen (inline: at

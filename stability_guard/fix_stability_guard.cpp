@@ -4,7 +4,7 @@
 
    Every check reduces its measures over all ranks first, so every rank
    takes the same decision and an error is raised by all of them at once
-   (error->all): a failing check never leaves a rank waiting.
+   (style_error): a failing check never leaves a rank waiting.
 ------------------------------------------------------------------------- */
 
 #include "fix_stability_guard.h"
@@ -31,20 +31,20 @@
 #include "update.h"
 
 #include "contact_scales.h"
-#include "restart_record.h"
+#include "rank_choice.h"
+#include "restart_envelope.h"
 #include "scalar_input.h"
 #include "style_args.h"
+#include "style_error.h"
 
-#include "stability_messages.h"
 #include "stability_checks.h"
-#include "rank_choice.h"
+#include "stability_messages.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
 
-const std::string PREFIX = "Fix stability/guard: ";
 constexpr double RECORD_MAGIC = 7.0e9 + 4871.0; // of this style's restart record
 constexpr int RECORD_VERSION = 1;
 constexpr std::size_t RECORD_LENGTH = 7; // magic, version, length and the 4 fields written
@@ -66,11 +66,6 @@ constexpr double MAX_MOVE = 1.0;
 constexpr double MAX_OVERLAP = 1.0;
 constexpr double MAX_TIME_STEP = 2.0;
 constexpr double MAX_ILIMIT = 1.0;
-
-std::string msg(const std::string &text)
-{
-  return PREFIX + text;
-}
 
 // "<what>, a number > 0 and <= <max> (<why the max>; default <default>)"
 std::string limit_usage(const std::string &what, double max, double fallback,
@@ -102,13 +97,15 @@ const std::string INERTIAL_USAGE =
 /* ---------------------------------------------------------------------- */
 
 FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
-  : Fix(lammps, narg, arg), move_limit(DEFAULT_MOVE), overlap_limit(DEFAULT_OVERLAP),
-    time_step_limit(DEFAULT_TIME_STEP), inertial_limit(DEFAULT_ILIMIT), check_inertial(false),
-    d50(0.0), density(0.0), natoms0(0), warned_overlap(false), warned_inertial(false), warnings(0)
+  : Fix(lammps, narg, arg), prefix(style_prefix("Fix", style, id)), move_limit(DEFAULT_MOVE),
+    overlap_limit(DEFAULT_OVERLAP), time_step_limit(DEFAULT_TIME_STEP),
+    inertial_limit(DEFAULT_ILIMIT), check_inertial(false), d50(0.0), density(0.0), natoms0(0),
+    warned_overlap(false), warned_inertial(false), warnings(0)
 {
   if (!atom->radius_flag)
-    fail(msg(std::string("requires atom style sphere or granular (per-atom radius), not ") +
-             atom->atom_style + "; use atom_style granular"));
+    style_error(lmp, prefix,
+                std::string("requires atom style sphere or granular (per-atom radius), not ") +
+                    atom->atom_style + "; use atom_style granular");
 
   nevery = DEFAULT_EVERY;
   // the four limits are read alike: a number > 0 and <= the largest that is meaningful
@@ -122,7 +119,7 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
                 {"timestep", TIMESTEP_USAGE, MAX_TIME_STEP, time_step_limit},
                 {"ilimit", ILIMIT_USAGE, MAX_ILIMIT, inertial_limit}};
   std::string ilimit_text; // as written, when given
-  StyleArgs args(lmp, PREFIX, narg, arg, 3);
+  StyleArgs args(lmp, prefix, narg, arg, 3);
   while (args.more()) {
     const std::string &key = args.keyword();
     const auto limit = std::find_if(std::begin(limits), std::end(limits),
@@ -144,9 +141,10 @@ FixStabilityGuard::FixStabilityGuard(LAMMPS *lammps, int narg, char **arg)
     }
   }
   if (!ilimit_text.empty() && !check_inertial)
-    fail(keyword_message(PREFIX, "ilimit", ilimit_text,
-                         "has no effect without keyword 'inertial'; add inertial R P, or leave "
-                         "ilimit out"));
+    style_error(lmp, prefix,
+                keyword_text("ilimit", ilimit_text,
+                             "has no effect without keyword 'inertial'; add inertial R P, or "
+                             "leave ilimit out"));
 
   vector_flag = 1;
   restart_global = 1;
@@ -164,17 +162,18 @@ int FixStabilityGuard::setmask()
 void FixStabilityGuard::init()
 {
   if (check_inertial) {
-    rate_in.init(lmp, PREFIX, "inertial");
-    pressure_in.init(lmp, PREFIX, "inertial");
+    rate_in.init(lmp, prefix, "inertial");
+    pressure_in.init(lmp, prefix, "inertial");
   }
   const GrainScales grains = group_grain_scales(lmp, groupbit, world);
   if (grains.empty)
-    fail(msg(std::string("the fix group '") + group->names[igroup] +
-             "' has no atoms; use a group with the particles to watch"));
+    style_error(lmp, prefix,
+                std::string("the fix group '") + group->names[igroup] +
+                    "' has no atoms; use a group with the particles to watch");
   d50 = grains.d50;
   density = grains.density;
   values[TIME_STEP_RATIO] =
-      check_time_step(lmp, groupbit, world, PREFIX, time_step_limit, warned_dt);
+      check_time_step(lmp, groupbit, world, prefix, time_step_limit, warned_dt);
 }
 
 /* ----------------------------------------------------------------------
@@ -227,24 +226,21 @@ void FixStabilityGuard::write_restart(FILE *fp)
   for (double v : {static_cast<double>(warnings), warned_overlap ? 1.0 : 0.0,
                    warned_inertial ? 1.0 : 0.0, warned_dt})
     out.put(v);
-  const std::vector<double> &rec = out.finish();
-  if (comm->me != 0) return;
-  const int size = static_cast<int>(rec.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(rec.data(), sizeof(double), rec.size(), fp);
+  write_restart_record(lmp, fp, out.finish());
 }
 
 void FixStabilityGuard::restart(char *raw)
 {
-  RestartRecordReader in(reinterpret_cast<const double *>(raw), RECORD_LENGTH, RECORD_MAGIC,
-                         RECORD_VERSION);
+  RestartRecordReader in =
+      read_restart_record(raw, RECORD_MAGIC, RECORD_VERSION, RECORD_VERSION, RECORD_LENGTH);
   warnings = static_cast<int>(in.get());
   warned_overlap = in.get() != 0.0;
   warned_inertial = in.get() != 0.0;
   warned_dt = in.get();
   if (!in.finished())
-    fail(msg(std::string("the restart file's state of fix ") + id + " cannot be read: " +
-             in.error() + "; define this fix with another ID to start its checks afresh"));
+    style_error(lmp, prefix,
+                std::string("the restart file's state of fix ") + id + " cannot be read: " +
+                    in.error() + "; define this fix with another ID to start its checks afresh");
 }
 
 /* ----------------------------------------------------------------------
@@ -269,8 +265,9 @@ double FixStabilityGuard::check_atoms(bool at_start)
     double size[2] = {ib >= 0 ? atom->radius[ib] : 0.0,
                       ib >= 0 && atom->rmass_flag ? atom->rmass[ib] : 0.0};
     const int first = rank_choice::name_first(world, ib >= 0 ? atom->tag[ib] : LLONG_MAX, size, 2);
-    fail(msg(stability::size_error(bad_size, update->ntimestep, first, size[0], size[1],
-                                   atom->rmass_flag)));
+    style_error(lmp, prefix,
+                stability::size_error(bad_size, update->ntimestep, first, size[0], size[1],
+                                      atom->rmass_flag));
   }
   long nonfinite = scan.nonfinite;
   MPI_Allreduce(MPI_IN_PLACE, &nonfinite, 1, MPI_LONG, MPI_SUM, world);
@@ -280,16 +277,18 @@ double FixStabilityGuard::check_atoms(bool at_start)
     double kind = static_cast<double>(scan.first_kind);
     const int first = rank_choice::name_first(
         world, in >= 0 ? (force_only ? 1LL << 32 : 0LL) + atom->tag[in] : LLONG_MAX, &kind, 1);
-    fail(msg(stability::nonfinite_error(nonfinite, update->ntimestep, first, dt_ratio,
-                                        static_cast<stability::NonFinite>(static_cast<int>(kind)),
-                                        at_start)));
+    style_error(lmp, prefix,
+                stability::nonfinite_error(
+                    nonfinite, update->ntimestep, first, dt_ratio,
+                    static_cast<stability::NonFinite>(static_cast<int>(kind)), at_start));
   }
   const rank_choice::ValueTag fastest = rank_choice::max_over_ranks(
       {scan.max_step_fraction, scan.argmax_step >= 0 ? atom->tag[scan.argmax_step] : 0}, world);
   const stability::StepVerdict verdict = stability::judge_step_fraction(fastest.value, move_limit);
   if (verdict != stability::StepVerdict::Within)
-    fail(msg(stability::step_error(fastest.tag, fastest.value, update->ntimestep, move_limit,
-                                   verdict, dt_ratio)));
+    style_error(lmp, prefix,
+                stability::step_error(fastest.tag, fastest.value, update->ntimestep, move_limit,
+                                      verdict, dt_ratio));
   return fastest.value;
 }
 
@@ -314,7 +313,9 @@ bigint FixStabilityGuard::count_group_atoms()
 bigint FixStabilityGuard::check_lost_atoms()
 {
   const bigint lost = natoms0 - count_group_atoms();
-  if (lost > 0) fail(msg(stability::lost_error(lost, update->ntimestep, values[TIME_STEP_RATIO])));
+  if (lost > 0)
+    style_error(lmp, prefix,
+                stability::lost_error(lost, update->ntimestep, values[TIME_STEP_RATIO]));
   return lost;
 }
 
@@ -365,8 +366,9 @@ double FixStabilityGuard::check_inertial_number()
   if (inertial.status == stability::InertialStatus::BadPressure)
     bad_inertial_value(pressure_in, pressure, "> 0 (the pressure P)");
   if (inertial.status == stability::InertialStatus::Overflow)
-    fail(keyword_message(PREFIX, "inertial", rate_in.text() + " " + pressure_in.text(),
-                         stability::inertial_overflow(update->ntimestep, rate, pressure)));
+    style_error(lmp, prefix,
+                keyword_text("inertial", rate_in.text() + " " + pressure_in.text(),
+                             stability::inertial_overflow(update->ntimestep, rate, pressure)));
   if (stability::warn_once_now(inertial.value, inertial_limit, warned_inertial)) {
     warned_inertial = true;
     warn(stability::inertial_warning(inertial.value, inertial_limit, update->ntimestep, rate, d50,
@@ -378,21 +380,15 @@ double FixStabilityGuard::check_inertial_number()
 // a variable of 'inertial R P' evaluated to a value it must not have
 void FixStabilityGuard::bad_inertial_value(const ScalarInput &in, double value, const char *must)
 {
-  fail(keyword_message(PREFIX, "inertial", in.text(),
-                       "is " + number_text(value) + " at step " +
-                           std::to_string(update->ntimestep) + "; it must be a finite number " +
-                           must));
-}
-
-// an error raised by every rank (each has taken the same decision)
-void FixStabilityGuard::fail(const std::string &text)
-{
-  error->all(FLERR, text.c_str());
-  std::abort(); // Error::all does not return; tells the compiler so
+  style_error(lmp, prefix,
+              keyword_text("inertial", in.text(),
+                           "is " + number_text(value) + " at step " +
+                               std::to_string(update->ntimestep) + "; it must be a finite number " +
+                               must));
 }
 
 void FixStabilityGuard::warn(const std::string &text)
 {
   warnings++;
-  if (comm->me == 0) error->warning(FLERR, msg(text).c_str());
+  style_warning(lmp, prefix, text);
 }

@@ -47,10 +47,11 @@ class FixStabilityGuard : public Fix {
   };
 
  private:
-  double move_limit;      // error: a particle moves more than this x its radius in one step
-  double overlap_limit;   // warning: overlap / smaller radius
-  double time_step_limit; // warning: dt / sqrt(m_min / k_n)
-  double inertial_limit;  // warning: inertial number
+  const std::string prefix; // of every message: "Fix stability/guard (id g): "
+  double move_limit;        // error: a particle moves more than this x its radius in one step
+  double overlap_limit;     // warning: overlap / smaller radius
+  double time_step_limit;   // warning: dt / sqrt(m_min / k_n)
+  double inertial_limit;    // warning: inertial number
   bool check_inertial;
   ScalarInput rate_in, pressure_in;
 
@@ -70,7 +71,6 @@ class FixStabilityGuard : public Fix {
   double check_overlaps();
   double check_inertial_number();
   [[noreturn]] void bad_inertial_value(const ScalarInput &in, double value, const char *must);
-  [[noreturn]] void fail(const std::string &text);
   bigint count_group_atoms();
   void warn(const std::string &text);
 };

@@ -6,23 +6,6 @@
 
 namespace stability {
 
-double contact_time(double mass_min, double stiffness_max)
-{
-  if (!(mass_min > 0.0) || !(stiffness_max > 0.0)) return 0.0;
-  return std::sqrt(mass_min / stiffness_max);
-}
-
-double time_step_ratio(double dt, double mass_min, double stiffness_max)
-{
-  const double t = contact_time(mass_min, stiffness_max);
-  return t > 0.0 ? dt / t : 0.0;
-}
-
-double safe_time_step(double fraction, double mass_min, double stiffness_max)
-{
-  return fraction * contact_time(mass_min, stiffness_max);
-}
-
 double inertial_number(double strain_rate, double diameter, double density, double pressure)
 {
   if (!(pressure > 0.0)) return std::numeric_limits<double>::infinity();

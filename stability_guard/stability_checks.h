@@ -7,32 +7,11 @@
 
 #include <cstddef>
 
+#include "stability_limits.h"
+
 namespace stability {
 
-// The limits both fix stability/guard and fix membrane2d compare with, defined
-// here only (doc/fix_stability_guard.md, Description).
-// dt / sqrt(m_min/k_n): above it the contacts are poorly resolved (warned)
-constexpr double TIME_STEP_POORLY_RESOLVED = 0.3;
-// dt / sqrt(m_min/k_n) of the published set-up: what the warnings advise
-constexpr double TIME_STEP_SAFE = 0.15;
-// the inertial number below which a test is quasi-static (GDR MiDi 2004)
-constexpr double INERTIAL_QUASI_STATIC = 1e-3;
-// |v| dt / r: a quasi-static test moves particles less than this per step ...
-constexpr double STEP_FRACTION_QUASI_STATIC = 1e-3;
-// ... and a run that has blown up more than this
-constexpr double STEP_FRACTION_BLOWN_UP = 0.05;
-
-// sqrt(m/k): the time scale of a linear contact k on the lightest particle m. Its
-// period is 2 pi sqrt(m_eff/k); velocity Verlet is stable below dt = 2 sqrt(m_eff/k)
-// for one spring, lower with several contacts per particle. The published set-up
-// runs at 0.15 of it; above 0.3 we warn. Non-positive input -> 0.
-double contact_time(double mass_min, double stiffness_max);
-
-// dt in units of contact_time(); 0 when the contact time is unknown.
-double time_step_ratio(double dt, double mass_min, double stiffness_max);
-
-// The largest dt at which time_step_ratio() stays at or below `fraction`.
-double safe_time_step(double fraction, double mass_min, double stiffness_max);
+// The limits and the contact time scale: common/stability_limits.h
 
 // Inertial number I = |rate| d sqrt(rho / p) of a sheared granular sample
 // (GDR MiDi 2004): quasi-static below 1e-3. p <= 0 -> +inf.

@@ -1,51 +1,9 @@
 #include "stability_messages.h"
 
-#include <cstdarg>
 #include <cmath>
 #include <cstdio>
 
 namespace stability {
-
-namespace {
-
-// printf into a string: the texts are short, but one with long numbers must
-// not be cut
-std::string format(const char *fmt, ...)
-{
-  va_list args, again;
-  va_start(args, fmt);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, fmt, args);
-  va_end(args);
-  std::string text(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
-  if (n > 0) std::vsnprintf(&text[0], text.size() + 1, fmt, again);
-  va_end(again);
-  return text;
-}
-
-} // namespace
-
-std::string time_step_warning(double dt, double mass_min, double stiffness_max, double limit)
-{
-  const double ratio = time_step_ratio(dt, mass_min, stiffness_max);
-  const double fraction = limit < TIME_STEP_SAFE ? limit : TIME_STEP_SAFE;
-  const double suggested = safe_time_step(fraction, mass_min, stiffness_max);
-  const char *published = fraction == TIME_STEP_SAFE ? ", the published set-up" : "";
-  const std::string what =
-      format("time step %g s is %.2g x sqrt(m_min/k_n) = %.3g s (m_min = %.3g "
-             "kg, k_n = %.3g N/m), above the limit %g",
-             dt, ratio, contact_time(mass_min, stiffness_max), mass_min, stiffness_max, limit);
-  if (ratio > TIME_STEP_POORLY_RESOLVED)
-    return what + format("; above %g the contacts are poorly resolved and the run may go "
-                         "unstable: reduce it, use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)",
-                         TIME_STEP_POORLY_RESOLVED, suggested, fraction, published);
-  if (ratio > TIME_STEP_SAFE)
-    return what + format(": use timestep <= %.2g (%g x sqrt(m_min/k_n)%s)", suggested, fraction,
-                         published);
-  return what + format("; it is within %g x sqrt(m_min/k_n), the published set-up, which is "
-                       "safe: keep it, or use timestep <= %.2g only to stay below the limit",
-                       TIME_STEP_SAFE, suggested);
-}
 
 std::string unstable_hint(double time_step_ratio)
 {

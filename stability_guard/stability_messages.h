@@ -1,9 +1,8 @@
 #ifndef LIGGGHTS_MEMBRANE_GUARD_MESSAGES_H
 #define LIGGGHTS_MEMBRANE_GUARD_MESSAGES_H
 // The wording of the stability errors and warnings that depends on numbers
-// only (no LIGGGHTS), without the style's prefix: the time-step warning of
-// fix stability/guard and fix membrane2d, and the other messages of fix
-// stability/guard. The limits they quote are those of stability_checks.h, so a
+// only (no LIGGGHTS), without the style's prefix: the messages of fix
+// stability/guard. The limits they quote are those of common/stability_limits.h, so a
 // change there changes every message. Steps and atom IDs are LIGGGHTS' bigint
 // and tagint.
 
@@ -13,12 +12,7 @@
 
 namespace stability {
 
-// dt exceeds `limit` x contact_time(mass_min, stiffness_max): what the step is,
-// and what to use, worded by how large it is: above TIME_STEP_POORLY_RESOLVED
-// the run may go unstable; the step to use is min(limit, TIME_STEP_SAFE) x the
-// contact time; within TIME_STEP_SAFE it is called safe (only a stricter limit
-// is exceeded).
-std::string time_step_warning(double dt, double mass_min, double stiffness_max, double limit);
+// (the time-step warning: common/stability_limits.h)
 
 // What to change, closing the errors of an unstable run: the time step only
 // when dt / sqrt(m_min/k_n) = `time_step_ratio` is above TIME_STEP_SAFE; all

@@ -1,6 +1,6 @@
 """D50: the median grain diameter by mass, as the C++ styles define it.
 
-The step definition of stability::d50_by_mass (stability_guard/grain_size.cpp, used by
+The step definition of grains::d50_by_mass (common/grain_size.cpp, used by
 common/contact_scales.h group_grain_scales for the default tolerances of fix
 membrane2d and fix membrane3d): the smallest diameter d such that the grains of
 diameter <= d hold at least half of the mass, a grain of diameter d weighing d^2

@@ -16,7 +16,7 @@ LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)
 WARNING: Mesh for fix mesh/surface/stress has been scaled
 WARNING: Fix membrane2d: chain disk 12 moved 0.2 of its radius in one step at step 40
 WARNING: Fix membrane2d: chain disk 12 moved 0.2 of its radius in one step at step 40
-ERROR: Fix stability/guard: atom 3 moved 0.07 of its radius in one step at step 41
+ERROR: Fix stability/guard (id guard): atom 3 moved 0.07 of its radius in one step at step 41
 ERROR: a second error
 """
 
@@ -51,7 +51,7 @@ class Helpers(unittest.TestCase):
             with open(screen, "w") as f:
                 f.write(SCREEN)
             err, warns = common.messages(screen, benign=("has been scaled",))
-            self.assertTrue(err.startswith("ERROR: Fix stability/guard: atom 3"))
+            self.assertTrue(err.startswith("ERROR: Fix stability/guard (id guard): atom 3"))
             self.assertEqual(len(warns), 1)           # deduplicated, the benign one left out
             self.assertIn("chain disk 12", warns[0])
             self.assertEqual(common.symptom(screen), err)

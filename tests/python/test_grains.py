@@ -1,5 +1,5 @@
 """liggghts_membrane.grains.d50_by_mass: the step definition of the C++ styles
-(stability_guard/grain_size.cpp), not an interpolation of the mass distribution."""
+(common/grain_size.cpp), not an interpolation of the mass distribution."""
 import math
 import unittest
 
@@ -22,7 +22,7 @@ class D50ByMass(unittest.TestCase):
         self.assertNotEqual(d50_by_mass(d, 2), interpolated)
 
     def test_cases_of_the_cpp_unit_test(self):
-        # tests/unit/stability/test_grain_size.cpp, the same inputs and answers
+        # tests/unit/common/test_grain_size.cpp, the same inputs and answers
         self.assertEqual(d50_by_mass([1.0, 1.0, 1.0, 3.0], 2), 3.0)   # 1+1+1 < 6, then 12
         self.assertEqual(d50_by_mass([2.0, 2.0, 2.0], 2), 2.0)
         # five of d = 1 and one of d = 2: areas 5 + 4 (5 >= 4.5 -> 1), volumes 5 + 8 (5 < 6.5 -> 2)

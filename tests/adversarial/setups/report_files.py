@@ -19,7 +19,7 @@ writes PATH (an OUT table; with .rose and .dump for the kinds that say so) of th
   rose-garbage  good, PATH.rose with a word in its 3rd block
   dump-cols   good, PATH.dump without the radius column
   sample      PATH is a folder: shear_rigid.txt and shear_membrane.txt (tables only)
-The curve is tests/python/synthetic.py's elastic-plastic law (known constants).
+The curve is liggghts_membrane.synthetic's elastic-plastic law (known constants).
 """
 import os
 import sys

@@ -95,7 +95,7 @@ int check_escapees(const std::vector<Disk> &d, const ChainResult &r, Side side, 
   for (std::size_t i = 0; i < d.size(); ++i) {
     EXPECT_FALSE(in_chain[i] && listed[i]) << "tag " << d[i].tag;
     if (in_chain[i]) continue;
-    const bool out = d[i].y > pl.ylo && d[i].y < pl.yhi &&
+    const bool out = d[i].y > pl.lo && d[i].y < pl.hi &&
                      membrane::outside_polyline(Vector2d(d[i].x, d[i].y), r.polyline, side);
     if (out) {
       ++outside;
@@ -129,7 +129,7 @@ TEST(MembraneChain, HexBlockRightEdge)
   EXPECT_EQ(r.failed_starts, 0);
   ASSERT_EQ(r.polyline.size(), 11u);
   EXPECT_EQ(r.polyline.front(), Vector2d(5.0, 0.0));
-  EXPECT_EQ(r.polyline.back(), Vector2d(5.5, platens_for(10).yhi));
+  EXPECT_EQ(r.polyline.back(), Vector2d(5.5, platens_for(10).hi));
   EXPECT_NEAR(r.polyline[1].x(), 5.25, 1e-14);
   EXPECT_NEAR(r.polyline[1].y(), row_y(0.5), 1e-14);
   // The right chain walks up with the sample on its left: forces point to -x.
@@ -265,7 +265,7 @@ TEST(MembraneChain, DisksAbovePlatenOrInsideAreNotEscapees)
 {
   auto d = hex_block(6, 10);
   const Platens pl = platens_for(10);
-  d.push_back({100, 8.0, pl.yhi + 1.0, 0.4}); // outside in x but above the top platen
+  d.push_back({100, 8.0, pl.hi + 1.0, 0.4}); // outside in x but above the top platen
   d.push_back({101, 2.5, row_y(4.5), 0.1});   // rattler in a pore: inside
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, pl, 1e-6);
@@ -308,7 +308,7 @@ TEST(MembraneChain, GapAcrossWholeWidthFails)
   for (Disk &k : d)
     if (k.y > row_y(4.5)) k.y += 0.2;
   Platens pl = platens_for(10);
-  pl.yhi += 0.2;
+  pl.hi += 0.2;
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, pl, 1e-3);
   EXPECT_FALSE(r.ok);
@@ -325,7 +325,7 @@ TEST(MembraneChain, NothingTouchesBottomFails)
 {
   auto d = hex_block(6, 10);
   Platens pl = platens_for(10);
-  pl.ylo = -0.5;
+  pl.lo = -0.5;
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, pl, 1e-3);
   EXPECT_FALSE(r.ok);
@@ -432,7 +432,7 @@ TEST(MembraneChain, KeptChainPolylineFollowsMovedDisks)
   EXPECT_NEAR(moved[4].x(), a.x + a.r / (a.r + b.r) * (b.x - a.x), 1e-15);
   EXPECT_NEAR(moved[4].y(), a.y + a.r / (a.r + b.r) * (b.y - a.y), 1e-15);
   EXPECT_EQ(moved.front(), Vector2d(d[r.chain.front()].x, 0.0));
-  EXPECT_EQ(moved.back(), Vector2d(d[r.chain.back()].x, platens_for(10).yhi));
+  EXPECT_EQ(moved.back(), Vector2d(d[r.chain.back()].x, platens_for(10).hi));
   expect_force_balance(moved, Side::Right, 1e5, 1.0);
 }
 
@@ -480,8 +480,8 @@ TEST(MembraneChain, MirrorSymmetricSampleBalances)
     const auto d = mirrored_block(11, seed, amp);
     Platens pl{std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
     for (const Disk &k : d) {
-      pl.ylo = std::min(pl.ylo, k.y - k.r);
-      pl.yhi = std::max(pl.yhi, k.y + k.r);
+      pl.lo = std::min(pl.lo, k.y - k.r);
+      pl.hi = std::max(pl.hi, k.y + k.r);
     }
     ChainFinder cf;
     const ChainResult l = cf.find(d, Side::Left, pl, 0.1);

@@ -85,8 +85,8 @@ TEST(MembraneMeasure, HexBlockAreaFromChains)
   const auto l = cf.find(d, Side::Left, pl, 1e-6);
   const auto r = cf.find(d, Side::Right, pl, 1e-6);
   ASSERT_TRUE(l.ok && r.ok);
-  EXPECT_NEAR(membrane::sample_area(l.polyline, r.polyline), 5.0 * (pl.yhi - pl.ylo), 1e-12);
-  EXPECT_NEAR(membrane::width_at(0.5 * (pl.ylo + pl.yhi), l.polyline, r.polyline), 5.0, 1e-12);
+  EXPECT_NEAR(membrane::sample_area(l.polyline, r.polyline), 5.0 * (pl.hi - pl.lo), 1e-12);
+  EXPECT_NEAR(membrane::width_at(0.5 * (pl.lo + pl.hi), l.polyline, r.polyline), 5.0, 1e-12);
 }
 
 TEST(MembraneBand, SlicesFollowTheEdge)

@@ -58,8 +58,8 @@ TEST(MembraneOutput, LengthLimitsAreRelativeToD50)
   EXPECT_EQ(band_problem(BAND_MIN * 0.002, 0.002), "");
   EXPECT_NE(band_problem(0.5 * BAND_MIN * 0.002, 0.002), "");
   EXPECT_NE(band_problem(1e-12, 0.002).find("is 5e-10 x D50 (D50 = 0.002)"), std::string::npos);
-  EXPECT_EQ(tolerance_problem(TOLERANCE_MAX * 0.002, 0.002), "");
-  const std::string t = tolerance_problem(0.02, 0.002);
+  EXPECT_EQ(tolerance_problem(MOST_TOLERANCE * 0.002, 0.002, MOST_TOLERANCE, DEFAULT_TOLERANCE), "");
+  const std::string t = tolerance_problem(0.02, 0.002, MOST_TOLERANCE, DEFAULT_TOLERANCE);
   EXPECT_NE(t.find("is 10 x D50"), std::string::npos) << t;
   EXPECT_NE(t.find("typically 0.02 x D50 = 4e-05 (the default)"), std::string::npos) << t;
 }

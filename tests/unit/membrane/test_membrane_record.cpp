@@ -217,11 +217,11 @@ TEST(MembraneRecord, CutWholeRecordIsRefused)
 
 TEST(MembraneRecord, FormatTwoIsReadWithoutAWindow)
 {
-  // a format-2 record (before the every-auto window) is the format-3 one
-  // without its last three fields
+  // a format-2 record (before the every-auto window) is the format-4 one
+  // without its last four fields (the window, the last detection's step)
   Definition def;
   std::vector<double> rec = sample_whole_record(def);
-  rec.resize(rec.size() - 3);
+  rec.resize(rec.size() - 4);
   rec[1] = 2;
   rec[2] = static_cast<double>(rec.size());
   RunState back;
@@ -234,8 +234,41 @@ TEST(MembraneRecord, FormatTwoIsReadWithoutAWindow)
   EXPECT_EQ(back.dense.window_steps, 0);
   EXPECT_EQ(back.dense.window_detections, 0);
   EXPECT_EQ(back.dense.unwatched_until, -1);
+  EXPECT_EQ(back.last_detection, -1); // not known: the next run detects
   // format 1 is refused (EarlierFormatIsRefused), and so is format 2 cut short
   rec.pop_back();
   rec[2] = static_cast<double>(rec.size());
   EXPECT_NE(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+}
+
+TEST(MembraneRecord, LastDetectionRoundTripsAndOldEveryNIsAnotherDefinition)
+{
+  Definition def;
+  def.detect_every = 25;
+  RunState run;
+  SideChain sides[2];
+  sample_state(run, sides);
+  run.last_detection = 1234;
+  std::vector<double> rec = write_record(def, run, sides);
+  RunState back;
+  SideChain back_sides[2];
+  bool same = false;
+  EXPECT_EQ(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+  EXPECT_TRUE(same);
+  EXPECT_EQ(back.last_detection, 1234);
+  // format 3: every 25 then detected on multiples of 25, not 25 steps after the last
+  rec.pop_back();
+  rec[1] = 3;
+  rec[2] = static_cast<double>(rec.size());
+  EXPECT_EQ(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+  EXPECT_FALSE(same);
+  // every auto meant what it means now
+  def.detect_every = EVERY_AUTO;
+  rec = write_record(def, run, sides);
+  rec.pop_back();
+  rec[1] = 3;
+  rec[2] = static_cast<double>(rec.size());
+  EXPECT_EQ(read_record(rec.data(), rec.size(), def, same, back, back_sides), "");
+  EXPECT_TRUE(same);
+  EXPECT_EQ(back.last_detection, -1);
 }

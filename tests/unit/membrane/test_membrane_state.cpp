@@ -155,16 +155,6 @@ TEST(MembraneState, WatchListHasOneEntryPerDiskWithAllItsRoles)
   EXPECT_EQ(list[3].tag, 8);
 }
 
-TEST(MembraneState, TypeChangesGiveLeavingDisksTheirOwnType)
-{
-  const std::map<long, int> own{{5, 1}, {3, 2}, {9, 1}};
-  const auto changes = type_changes({5, 3, 9, 11}, {9, 7}, own, 4);
-  // 11 leaves but its own type is unknown: left alone
-  const std::vector<std::pair<long, int>> want{{3, 2}, {5, 1}, {7, 4}, {9, 4}};
-  EXPECT_EQ(changes, want);
-  EXPECT_TRUE(type_changes({}, {}, own, 4).empty());
-}
-
 TEST(MembraneState, SearchResultSurvivesPackingAndCorruptOnesAreRefused)
 {
   ChainResult r;
@@ -229,18 +219,17 @@ TEST(MembraneState, DetectionIsNeededWhenDisksOrPlatensMoveTheBudget)
   EXPECT_FALSE(detection_needed(sides, p, p, 0.01, 0.0, 0.01));
 }
 
-TEST(MembraneState, LengthsAreTheGivenOnesOrTheDefaults)
+TEST(MembraneState, BandIsTheGivenOneOrTheDefault)
 {
   Definition def;
   RunState run;
-  set_lengths(def, 0.002, run);
+  set_lengths(def, 0.002, 4e-5, run);
   EXPECT_DOUBLE_EQ(run.band_width, DEFAULT_BAND * 0.002);
   EXPECT_DOUBLE_EQ(run.search_width, run.band_width);
-  EXPECT_DOUBLE_EQ(run.tolerance, DEFAULT_TOLERANCE * 0.002);
+  EXPECT_DOUBLE_EQ(run.tolerance, 4e-5);
   def.band_given = 0.05;
-  def.tolerance_given = 0.0;
   run.search_width = 0.3; // widened in an earlier run: kept
-  set_lengths(def, 0.002, run);
+  set_lengths(def, 0.002, 0.0, run);
   EXPECT_EQ(run.band_width, 0.05);
   EXPECT_EQ(run.search_width, 0.3);
   EXPECT_EQ(run.tolerance, 0.0);

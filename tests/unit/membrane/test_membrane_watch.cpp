@@ -106,8 +106,8 @@ TEST(DetectionWatch, PlatenContactNearTheToleranceIsWatched)
   EXPECT_TRUE(w.platen_contacts[0].bottom);
   EXPECT_TRUE(w.platen_contacts[0].touching);
   // the platen moving down by 0.006 takes the gap to 0.021: no longer touching
-  EXPECT_FALSE(membrane::watched_relation_changed(w, d, Side::Right, {-0.004, pl.yhi}, 0.02));
-  EXPECT_TRUE(membrane::watched_relation_changed(w, d, Side::Right, {-0.006, pl.yhi}, 0.02));
+  EXPECT_FALSE(membrane::watched_relation_changed(w, d, Side::Right, {-0.004, pl.hi}, 0.02));
+  EXPECT_TRUE(membrane::watched_relation_changed(w, d, Side::Right, {-0.006, pl.hi}, 0.02));
 }
 
 TEST(DetectionWatch, StartOrderIsWatchedWhenCandidatesAreClose)
@@ -158,7 +158,7 @@ TEST(DetectionWatch, UnchangedWatchMeansUnchangedChain)
     auto base = hex_block(5, 10);
     for (Disk &disk : base) disk.r -= shrink(rng);
     for (Disk &disk : base) disk.x += 0.01 * unit(rng);
-    const Platens pl{0.0, platens_for(10).yhi};
+    const Platens pl{0.0, platens_for(10).hi};
     ChainFinder finder;
     ChainResult r0;
     finder.find(base, Side::Right, pl, tol, r0);

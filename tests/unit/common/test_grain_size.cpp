@@ -2,7 +2,7 @@
 
 #include "grain_size.h"
 
-using stability::d50_by_mass;
+using grains::d50_by_mass;
 
 TEST(D50ByMass, HalfOfTheDiskAreaLiesBelowIn2D)
 {
@@ -22,4 +22,13 @@ TEST(D50ByMass, HalfOfTheSphereVolumeLiesBelowIn3D)
   EXPECT_EQ(d50_by_mass({1.0, 1.0, 2.0, 1.0, 1.0, 1.0}, 2), 1.0);
   EXPECT_EQ(d50_by_mass({1.0, 1.0, 2.0, 1.0, 1.0, 1.0}, 3), 2.0);
   EXPECT_EQ(d50_by_mass({}, 3), 0.0);
+}
+
+TEST(D50ByMass, ExactlyHalfIsEnough)
+{
+  // the smallest d with at least half of the mass at or below it: areas 1, 1, 2
+  // (total 4): cumulative 1, 2 = half -> d = 1, not the next size
+  EXPECT_EQ(d50_by_mass({1.0, 1.0, 1.4142135623730951}, 2), 1.0);
+  // one grain: itself
+  EXPECT_EQ(d50_by_mass({0.7}, 3), 0.7);
 }

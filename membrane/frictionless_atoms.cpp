@@ -1,20 +1,20 @@
-#include "membrane3d_types.h"
+#include "frictionless_atoms.h"
 
 #include "atom.h"
 
-void Membrane3dTypes::set_all_copies(int tag, int type)
+void FrictionlessAtoms::set_all_copies(AtomId tag, int type)
 {
   if (tag > atom->map_tag_max) return;
   for (int i = atom->map(tag); i >= 0; i = atom->sametag[i]) atom->type[i] = type;
 }
 
-void Membrane3dTypes::change(const std::vector<int> &tags, const std::vector<int> &types)
+void FrictionlessAtoms::wear(const std::vector<AtomId> &tags, const std::vector<int> &types)
 {
   if (type_ <= 0) return;
-  std::map<int, int> now;
+  std::map<AtomId, int> now;
   for (std::size_t k = 0; k < tags.size(); k++) {
     const auto known = own_type_.find(tags[k]);
-    // a sphere already on the membrane wears type T: its own type is the one kept
+    // a particle already on the membrane wears type T: its own type is the one kept
     now[tags[k]] = known != own_type_.end() ? known->second : types[k];
   }
   for (const auto &left : own_type_)
@@ -24,7 +24,7 @@ void Membrane3dTypes::change(const std::vector<int> &tags, const std::vector<int
   applied_ = true;
 }
 
-void Membrane3dTypes::restore()
+void FrictionlessAtoms::restore()
 {
   if (applied_)
     for (const auto &on : own_type_) set_all_copies(on.first, on.second);
@@ -32,7 +32,7 @@ void Membrane3dTypes::restore()
   applied_ = false;
 }
 
-void Membrane3dTypes::restore_for_restart()
+void FrictionlessAtoms::restore_for_restart()
 {
   const int nlocal = atom->nlocal;
   restored_.assign(nlocal, 0);
@@ -43,13 +43,20 @@ void Membrane3dTypes::restore_for_restart()
     atom->type[i] = on.second;
     restored_[i] = 1;
   }
-  applied_ = false; // pre_force gives the type again to a sphere the write skipped
+  applied_ = false; // pre_force gives the type again to a particle the write skipped
 }
 
-void Membrane3dTypes::packed(int i)
+void FrictionlessAtoms::packed(int i)
 {
   if (i < static_cast<int>(restored_.size()) && restored_[i]) {
     atom->type[i] = type_;
     restored_[i] = 0;
   }
+}
+
+double FrictionlessAtoms::memory_usage() const
+{
+  // a map node: the pair and about four pointers of the tree
+  return static_cast<double>(own_type_.size() * (sizeof(AtomId) + sizeof(int) + 32) +
+                             restored_.capacity());
 }

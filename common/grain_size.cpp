@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace stability {
+namespace grains {
 
 double d50_by_mass(std::vector<double> diameters, int dimension)
 {
@@ -20,4 +20,4 @@ double d50_by_mass(std::vector<double> diameters, int dimension)
   return diameters.back();
 }
 
-} // namespace stability
+} // namespace grains
