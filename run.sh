@@ -12,6 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 root=$(pwd)
+export PYTHONPATH="$root/python${PYTHONPATH:+:$PYTHONPATH}"   # the package python/liggghts_membrane
 . tools/run_options.sh
 
 usage() {
@@ -138,7 +139,7 @@ for k in $(seq 1 "$samples"); do
   dir=$out/scale${scale}_seed$s
   dirs+=("$dir")
   mkdir -p "$dir"
-  prep_key="scale $scale seed $s np $np scripts $(script_hash in.prepare material.inc "$root/scripts/generate_sample.py")"
+  prep_key="scale $scale seed $s np $np scripts $(script_hash in.prepare material.inc "$root/python/liggghts_membrane/sample.py")"
   if [ "$(cat "$dir/prepare.key" 2>/dev/null)" = "$prep_key" ] \
       && grep -qE "^PREPARED porosity" "$dir/screen.prepare" 2>/dev/null; then
     echo "== sample $k of $samples: scale $scale, seed $s: prepared before, reused"

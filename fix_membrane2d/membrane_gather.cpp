@@ -334,6 +334,17 @@ void MembraneGather::report_traffic(const char *id, bigint step, long long detec
                                 traffic_.full_passes, slowest[0], slowest[1]);
   if (screen) fprintf(screen, "%s%s\n", prefix_.c_str(), text.c_str());
   if (logfile) fprintf(logfile, "%s%s\n", prefix_.c_str(), text.c_str());
+  // the same numbers as key=value words, for programs (bench/scaling.py)
+  const long long steps = step - traffic_.first_step, dets = detections - traffic_.first_detections;
+  char line[400];
+  snprintf(line, sizeof(line),
+           "membrane2d_traffic id=%s kb_per_step=%.6g kb_per_detection=%.6g steps=%lld "
+           "detections=%lld full_passes=%lld fix_seconds=%.6g search_seconds=%.6g\n",
+           id, steps > 0 ? traffic_.step_bytes / steps / 1e3 : traffic_.step_bytes / 1e3,
+           dets > 0 ? traffic_.detection_bytes / dets / 1e3 : 0.0, steps, dets,
+           static_cast<long long>(traffic_.full_passes), slowest[0], slowest[1]);
+  if (screen) fputs(line, screen);
+  if (logfile) fputs(line, logfile);
 }
 
 double MembraneGather::gathered_bytes() const

@@ -1,64 +1,10 @@
-#!/usr/bin/env python3
-"""Collect the ParaView files of one biaxial shear into FOLDER/run.pvd: a time series
-whose every step holds the particles, the contacts, the walls and (membrane case) the
-membrane of that step, so that ParaView opens the whole run in one click.
-
-    paraview_collection.py FOLDER      (the folder of -var vtkdir, examples/biaxial)
-
-The steps are those of the particle files (particles_<step>.vtp); a kind whose file of
-that step is missing (the membrane before shear, a rigid-wall run) is left out of that
-step. doc/paraview.md describes the files."""
-import os
-import re
+#!/usr/bin/python3
+"""paraview_collection.py FOLDER: the run.pvd of a shear's ParaView folder
+(liggghts_membrane.pvd). The package is found on PYTHONPATH (run.sh, test.sh and CTest set it to the
+repository's python/) or where the Debian package installs it (doc/install.md).
+"""
 import sys
 
-# the kinds of file in the folder, in the order of their parts in run.pvd
-KINDS = ("particles", "contacts", "walls", "membrane")
+from liggghts_membrane.pvd import main
 
-
-def frames(names):
-    """{kind: {step: file name}} of the .vtp files among `names`."""
-    found = {k: {} for k in KINDS}
-    for n in names:
-        m = re.fullmatch(r"(%s)_(\d+)\.vtp" % "|".join(KINDS), n)
-        if m:
-            found[m.group(1)][int(m.group(2))] = n
-    return found
-
-
-def collection(names):
-    """The text of run.pvd for a folder holding the files `names`."""
-    found = frames(names)
-    rows = []
-    for step in sorted(found["particles"]):
-        for part, kind in enumerate(KINDS):
-            if step in found[kind]:
-                rows.append('    <DataSet timestep="%d" part="%d" name="%s" file="%s"/>'
-                            % (step, part, kind, found[kind][step]))
-    return ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
-            + "".join(r + "\n" for r in rows) + "  </Collection>\n</VTKFile>\n")
-
-
-def main(argv):
-    if len(argv) != 2 or argv[1] in ("-h", "--help"):
-        print(__doc__)
-        return 0 if len(argv) == 2 else 2
-    folder = argv[1]
-    if not os.path.isdir(folder):
-        print("paraview_collection.py: no folder %s (the -var vtkdir of the shear)" % folder,
-              file=sys.stderr)
-        return 1
-    names = os.listdir(folder)
-    if not frames(names)["particles"]:
-        # not an error: a shear shorter than -var vtkstrain ends before its first frame
-        print("paraview_collection.py: note: no particles_<step>.vtp in %s, no run.pvd written "
-              "(the shear ended before its first ParaView frame, or ran with -var vtkstrain 0)"
-              % folder, file=sys.stderr)
-        return 0
-    with open(os.path.join(folder, "run.pvd"), "w") as f:
-        f.write(collection(names))
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+sys.exit(main(sys.argv))

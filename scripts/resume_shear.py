@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Resume an interrupted shear run (run.sh --paper); see scripts/biaxial/resume.py.
+"""Resume an interrupted shear run (run.sh --paper); liggghts_membrane.resume.
 
     resume_shear.py start OUT WALLS   print the restart file to resume from (nothing if none),
                                       after splicing a previous part and cutting OUT* there
@@ -8,7 +8,7 @@
 """
 import sys
 
-from biaxial import resume
+from liggghts_membrane import resume
 
 if __name__ == "__main__":
     if len(sys.argv) < 3 or sys.argv[1] not in ("start", "finish", "clean") or \

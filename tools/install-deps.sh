@@ -8,8 +8,8 @@ packages=(
   libeigen3-dev                   # small dense linear algebra in the cores
   libcgal-dev                     # regular triangulation of the 3D membrane's packing
   cmake g++ make libgtest-dev     # build and unit tests
-  python3 python3-numpy python3-matplotlib   # post-processing and test driver
-  python3-vtk9                    # tests read the VTK files with a real VTK reader
+  python3 python3-numpy python3-scipy python3-matplotlib   # post-processing and test driver
+  python3-vtk9                    # the VTK files (.vtp, .vtk) read with VTK's own readers
   xvfb xauth                      # a display for VTK's off-screen rendering (scripts/render_paraview.py)
 )
 

@@ -16,9 +16,12 @@ set -euo pipefail
 REPO=${REPO:-${SLURM_SUBMIT_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}}   # built with tools/build.sh
 if [ -x "$REPO/build/app/liggghts-membrane" ]; then
   LM=$REPO/build/app/liggghts-membrane; WORK=${WORK:-$REPO/out/cluster}
+  export PYTHONPATH="$REPO/python${PYTHONPATH:+:$PYTHONPATH}"   # the package python/liggghts_membrane
 else                                        # the installed package
   LM=$(command -v liggghts-membrane) || { echo "cluster_job.sh: no $REPO/build/app/liggghts-membrane and no liggghts-membrane on PATH"; exit 1; }
-  REPO=$(dirname "$(readlink -f "$LM")")/../share/liggghts-membrane; WORK=${WORK:-$PWD/cluster}
+  prefix=$(dirname "$(readlink -f "$LM")")/..
+  REPO=$prefix/share/liggghts-membrane; WORK=${WORK:-$PWD/cluster}
+  export PYTHONPATH="$prefix/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
 fi
 mkdir -p "$WORK"; WORK=$(cd "$WORK" && pwd)
 SCALE=${SCALE:-4}; SEED=${SEED:-1}; CASE=${CASE:-membrane}

@@ -14,6 +14,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
+export PYTHONPATH="$root/python${PYTHONPATH:+:$PYTHONPATH}"   # the package python/liggghts_membrane
 . "$root/tools/run_options.sh"
 np=2
 seeds="86028121 104395301 122949823"

@@ -71,8 +71,7 @@ import tempfile
 from collections import OrderedDict
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "scripts"))
-import run_script  # noqa: E402  (tests/scripts/run_script.py: run() and the RESULT format)
+from liggghts_membrane import run_script
 
 SETUPS = os.path.join(HERE, "setups")
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))

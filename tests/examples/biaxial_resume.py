@@ -5,7 +5,7 @@ A quarter-size sample (526 disks) is prepared and sheared to 0.2 % axial strain 
 the paper preset's settings (local damping 0.7, side-wall servo without feed-forward,
 restart files every 2 000 steps), once straight through and once stopped after 5 000
 steps of the shear (the interruption: outputs written past the last restart file) and
-resumed from the latest restart file with the splicing of scripts/biaxial/resume.py.
+resumed from the latest restart file with the splicing of liggghts_membrane.resume.
 Checks, for each case:
 - the spliced OUT table has the steps of the straight one, each once;
 - every column equal to 1e-10 relative (the run goes in pieces that end on multiples of
@@ -25,8 +25,7 @@ import tempfile
 import numpy as np
 
 from example_run import Checks, ROOT, run
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from biaxial import readers, resume  # noqa: E402
+from liggghts_membrane import readers, resume
 
 PAPER = ["-var", "damping", "1", "-var", "feedforward", "0", "-var", "restartevery", "2000",
          "-var", "eatarget", "0.002", "-var", "ndump", "2000"]

@@ -12,13 +12,12 @@ on two small cuboid samples (W = 16 mm, about 400 spheres):
 
 Usage: comparison_small.py EXE NP"""
 import os
-import re
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_run import ROOT, Checks, run, table  # noqa: E402
-from triaxial_small import check_frames, vtk_frames  # noqa: E402
+from example_run import ROOT, Checks, run, table
+from triaxial_small import check_frames, vtk_frames
+from liggghts_membrane.readers import key_value_lines
 
 EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
 P = 1e5
@@ -40,22 +39,20 @@ def main():
             log = liggghts(exe, np_, ["-in", "in.cuboid_prepare", "-var", "seed", seed, "-var", "out",
                                       sample, "-var", "hfill", "0.06", "-var", "nsettle", "8000",
                                       "-var", "ncompress", "12000"] + SMALL, sample + ".log")
-            got = re.search(r"CUBOID compressed: sigma1 = (\S+) Pa, sides (\S+) (\S+) (\S+) (\S+) Pa "
-                            r"at H = (\S+) m", log)
-            stresses = [float(got.group(k)) for k in range(1, 6)]
+            got = key_value_lines(log, "cuboid_compressed")[0]     # in.cuboid_prepare's key=value line
+            stresses = [got[k] for k in ("sigma1", "sxlo", "sxhi", "sylo", "syhi")]
             check(max(abs(s / P - 1) for s in stresses) < 0.02,
                   "seed %s prepared: platen and side walls at %s Pa" %
                   (seed, " ".join("%.0f" % s for s in stresses)))
-            height = float(got.group(6))
+            height = got["H"]
             for boundary in ("walls", "membrane"):
                 out = os.path.join(tmp, "%s_%s" % (boundary, seed))
                 log = liggghts(exe, np_, ["-in", "in.cuboid_shear", "-var", "sample", sample,
                                           "-var", "boundary", boundary, "-var", "out", out,
                                           "-var", "nhold", "2000", "-var", "vtkevery", "2000"]
                                + SMALL, out + ".log")
-                held = re.search(r"CUBOID held \(%s\): sigma1 = (\S+) Pa, sigma3 = (\S+) Pa" %
-                                 boundary, log)
-                sigma1, sigma3 = float(held.group(1)), float(held.group(2))
+                held = key_value_lines(log, "cuboid_held")[0]
+                sigma1, sigma3 = held["sigma1"], held["sigma3"]
                 if boundary == "walls":
                     check(abs(sigma3 / P - 1) < 0.03, "seed %s walls held: sigma3 = %.0f Pa" %
                           (seed, sigma3))

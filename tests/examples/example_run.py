@@ -5,8 +5,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLE = os.path.join(ROOT, "examples", "biaxial")
-sys.path.insert(0, os.path.join(ROOT, "tests", "scripts"))
-from run_script import mpi_env  # noqa: E402  (an Open MPI session directory per run)
+from liggghts_membrane.run_script import mpi_env
 
 
 def run(cmd, log, cwd=EXAMPLE):

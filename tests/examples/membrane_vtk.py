@@ -22,11 +22,10 @@ import os
 import subprocess
 import sys
 import tempfile
-import xml.etree.ElementTree as ET
 
 from example_run import ROOT, Checks, mpi_env
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from biaxial.vtk_files import point_array, points, read_polydata  # noqa: E402
+from liggghts_membrane.pvd import read_collection
+from liggghts_membrane.vtk_files import point_array, points, read_polydata
 
 PRESSURE, THICKNESS = 1e5, 1.0
 BLOCK = """variable a equal 0.002
@@ -94,8 +93,8 @@ def main():
                 frames[int(float(w[1]))] = [float(x) for x in w[2:]]
         check(sorted(frames) == [50, 100], "the fix printed frames 50 and 100: %s" % sorted(frames))
 
-        pvd = ET.parse(os.path.join(work, "post", "membrane.pvd")).getroot()
-        listed = [(int(d.get("timestep")), d.get("file")) for d in pvd.iter("DataSet")]
+        listed = [(int(d.timestep), os.path.basename(d.path))
+                  for d in read_collection(os.path.join(work, "post", "membrane.pvd"))]
         check(listed == [(0, "membrane_0.vtp"), (50, "membrane_50.vtp"), (100, "membrane_100.vtp")],
               "the .pvd lists the frames 0, 50, 100 in order: %s" % listed)
         for step, (n_left, n_right, fxl, fyl, fxr, fyr, n_contacts) in sorted(frames.items()):

@@ -13,6 +13,9 @@ from its installed paths:
   and meshes there (no -var meshdir), and write only where -var out points;
 - liggghts-membrane-report reports the run: its last s1/s3 and axial strain are those
   of the table as this test reads it; --help names the command;
+- the installed commands use the installed Python package
+  (usr/lib/python3/dist-packages/liggghts_membrane, without bench/ and the test
+  helpers), not the checkout's (PYTHONPATH, which CTest sets, is cleared here);
 - nothing is written into the installed tree (the examples and scripts can live in a
   read-only /usr/share).
 
@@ -38,6 +41,7 @@ def tree_state(root):
 
 def main():
     config = sys.argv[1]
+    os.environ.pop("PYTHONPATH", None)   # the installed package only, not the checkout's
     check = Checks()
     with tempfile.TemporaryDirectory() as tmp:
         p = subprocess.run(["cpack", "-G", "DEB", "--config", config, "-B", os.path.join(tmp, "pkg")],
@@ -65,6 +69,11 @@ def main():
         example = os.path.join(root, SHARE, "examples", "biaxial")
         ldd = subprocess.run(["ldd", exe], capture_output=True, text=True).stdout
         check("liggghts" in ldd and "not found" not in ldd, "the installed executable finds its libraries")
+        package = os.path.join(root, "usr", "lib", "python3", "dist-packages", "liggghts_membrane")
+        check(os.path.isfile(os.path.join(package, "report_command.py"))
+              and not os.path.exists(os.path.join(package, "bench"))
+              and not os.path.exists(os.path.join(package, "synthetic.py")),
+              "the package is installed in usr/lib/python3/dist-packages (without bench/, synthetic.py)")
         before = tree_state(root)
 
         helped = subprocess.run([os.path.join(root, "usr", "bin", "liggghts-membrane-report"), "--help"],

@@ -8,15 +8,14 @@ frame (scripts/render_paraview.py, under xvfb-run) has the sample and its chain 
 import os
 import subprocess
 import sys
-import xml.etree.ElementTree as ET
 
 import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 from example_run import EXAMPLE, ROOT
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from biaxial.vtk_files import point_array, points, read_polydata as read  # noqa: E402
+from liggghts_membrane.pvd import read_collection
+from liggghts_membrane.vtk_files import point_array, points, read_polydata as read
 
 TRIANGLES = {"wb": "bottom", "wt": "top", "wl": "left", "wr": "right"}  # wall -> meshes/<name>.stl
 
@@ -30,14 +29,14 @@ def check_run(check, case, folder, table, natoms, walls):
     """Checks of one shear's folder; `table` is its OUT table ({column: values})."""
     subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "paraview_collection.py"), folder],
                    check=True)
-    sets = ET.parse(os.path.join(folder, "run.pvd")).getroot().find("Collection").findall("DataSet")
-    steps = sorted({int(d.get("timestep")) for d in sets})
+    sets = read_collection(os.path.join(folder, "run.pvd"))
+    steps = sorted({int(d.timestep) for d in sets})
     kinds = ["particles", "contacts", "walls"] + (["membrane"] if case == "membrane" else [])
     check(len(steps) >= 2 and len(sets) == len(steps) * len(kinds),
           "%s: run.pvd has %d steps of %s (%d data sets)" % (case, len(steps), "+".join(kinds), len(sets)))
     frame = {}
     for d in sets:
-        frame[(int(d.get("timestep")), d.get("name"))] = read(os.path.join(folder, d.get("file")))
+        frame[(int(d.timestep), d.name)] = read(d.path)
 
     first = None
     for step in steps:

@@ -21,40 +21,30 @@ about 290 spheres): physical sanity of each stage and of the membrane.
 
 Usage: triaxial_small.py EXE NP"""
 import os
-import re
 import sys
 import tempfile
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_run import ROOT, Checks, run, table  # noqa: E402
+from example_run import ROOT, Checks, run, table
 
 EXAMPLE = os.path.join(ROOT, "examples", "triaxial")
-sys.path.insert(0, EXAMPLE)
-from plot_triaxial import polydata_points, radius_profile  # noqa: E402
+from liggghts_membrane import vtk_files
+from liggghts_membrane.readers import key_value_lines
+from liggghts_membrane.pvd import collection_frames
+from liggghts_membrane.triaxial_plot import polydata_points, radius_profile
 
 P = 1e5
 
 
 def vtk_frames(pvd):
     """(step, points, polys, verts, load sum) of each frame of the membrane's collection,
-    read with VTK's own readers."""
-    import vtk  # Debian's python3-vtk9
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    folder = os.path.dirname(pvd)
-    with open(pvd) as f:
-        entries = re.findall(r'timestep="(\d+)" part="0" file="([^"]+)"', f.read())
+    read with the package's readers (pvd: the collection, vtk_files: VTK's own reader)."""
     frames = []
-    for step, name in entries:
-        reader = vtk.vtkXMLPolyDataReader()
-        reader.SetFileName(os.path.join(folder, name))
-        reader.Update()
-        poly = reader.GetOutput()
-        points = vtk_to_numpy(poly.GetPoints().GetData())
-        load = vtk_to_numpy(poly.GetPointData().GetArray("load"))
-        frames.append((int(step), points, poly.GetNumberOfPolys(), poly.GetNumberOfVerts(),
+    for step, path in collection_frames(pvd):
+        poly = vtk_files.read_polydata(path)
+        load = vtk_files.point_array(poly, "load")
+        frames.append((step, vtk_files.points(poly), poly.GetNumberOfPolys(), poly.GetNumberOfVerts(),
                        load.sum(axis=0)))
     return frames
 
@@ -128,11 +118,11 @@ def main():
                    "-var", "nsettle", "8000", "-var", "ncompress", "10000",
                    "-var", "nhold", "4000", "-var", "out", out],
                   out + ".log", cwd=EXAMPLE)
-        compressed = float(re.search(r"TRIAXIAL compressed: sigma1 = (\S+) Pa", log).group(1))
-        iso = re.search(r"TRIAXIAL isotropic: sigma1 = (\S+) Pa, V_out = (\S+) m3, R_out = (\S+) m, "
-                        r"membrane spheres (\S+), escaped (\S+)", log)
-        atoms = int(re.search(r"^ +1 +(\d+) ", log, re.M).group(1))
-        e1_end = float(re.search(r"TRIAXIAL done: e1 = (\S+),", log).group(1))
+        # in.triaxial's key=value lines
+        compressed = key_value_lines(log, "triaxial_compressed")[0]
+        iso = key_value_lines(log, "triaxial_isotropic")[0]
+        atoms = int(compressed["atoms"])
+        e1_end = key_value_lines(log, "triaxial_done")[0]["e1"]
         t = table(out + ".txt")
         frames = vtk_frames(os.path.join(out + ".paraview", "membrane.pvd"))
         check_paraview(check, out + ".paraview", t, frames)
@@ -152,8 +142,9 @@ def main():
             body = [l.split() for l in lines[1:] if l and not l.startswith("#")]
             rows[every] = [[l[k] for k in kept] for l in body]  # all but the detection counter
             detections[every] = float(body[-1][names.index("detections")]) if body else 0.0
-    check(abs(compressed / P - 1) < 0.05, "compressed in the cylinder: sigma1 = %.0f Pa" % compressed)
-    sigma1, spheres, escaped = float(iso.group(1)), float(iso.group(4)), float(iso.group(5))
+    check(abs(compressed["sigma1"] / P - 1) < 0.05,
+          "compressed in the cylinder: sigma1 = %.0f Pa" % compressed["sigma1"])
+    sigma1, spheres, escaped = iso["sigma1"], iso["membrane_spheres"], iso["escaped"]
     check(abs(sigma1 / P - 1) < 0.10, "isotropic with the membrane: sigma1 = %.0f Pa" % sigma1)
     check(spheres > 0.2 * atoms, "isotropic: %d of %d spheres on the membrane" % (spheres, atoms))
     check(escaped == 0, "isotropic: %d escaped" % escaped)
@@ -176,8 +167,7 @@ def main():
     check(0 < detections["auto"] < detections["1"],
           "every auto detects less: %d against %d" % (detections["auto"], detections["1"]))
     check_fabric(check, t)
-    check_frames(check, frames, float(re.search(r"TRIAXIAL compressed: sigma1 = \S+ Pa at H = (\S+) m",
-                                                log).group(1)))
+    check_frames(check, frames, compressed["H"])
     if check.failures:
         sys.exit("FAIL: %d checks" % len(check.failures))
 

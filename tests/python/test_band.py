@@ -3,9 +3,9 @@ import unittest
 
 import numpy as np
 
-import synthetic
-from biaxial import field
-from biaxial.curves import measured
+from liggghts_membrane import synthetic
+from liggghts_membrane import field
+from liggghts_membrane.curves import measured
 
 D50 = 1.75e-3
 
@@ -56,6 +56,14 @@ class Pieces(unittest.TestCase):
         self.assertGreater(ok.mean(), 0.99)
         np.testing.assert_allclose(G[ok], np.broadcast_to(L, G[ok].shape), atol=1e-12)
 
+    def test_neighbours_within_the_radius(self):
+        # (0,0)-(1,0) and (0,0)-(0,1) are 1 apart (counted: distance <= radius),
+        # (1,0)-(0,1) sqrt 2 apart, (5,5) alone
+        x = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [5.0, 5.0]])
+        G, count = field.local_gradients(x, np.zeros_like(x), 1.0)
+        np.testing.assert_array_equal(count, [2, 1, 1, 0])
+        self.assertTrue(np.isnan(G).all())   # fewer than 3 neighbours everywhere
+
     def test_max_shear_strain(self):
         G = np.array([[[1e-3, 0.0], [0.0, -1e-3]], [[0.0, 1e-3], [0.0, 0.0]]])
         np.testing.assert_allclose(field.max_shear_strain(G), [2e-3, 1e-3])
@@ -63,11 +71,6 @@ class Pieces(unittest.TestCase):
     def test_inclination(self):
         self.assertAlmostEqual(field.inclination_from_horizontal(125.0), 55.0)
         self.assertAlmostEqual(field.inclination_from_horizontal(55.0), 55.0)
-
-    def test_d50_by_mass(self):
-        # two sizes with equal total area: the median falls between them
-        r = np.array([1.0] * 4 + [2.0])
-        self.assertTrue(2.0 <= field.d50_by_mass(r) <= 4.0)
 
 
 if __name__ == "__main__":

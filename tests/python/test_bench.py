@@ -1,4 +1,4 @@
-"""Pure functions of the benchmark drivers (bench/common.py, bench/accuracy_sweep.py,
+"""Pure functions of the benchmark drivers (liggghts_membrane.bench.common, bench/accuracy_sweep.py,
 bench/accuracy_report.py) on hand-made input."""
 import os
 import sys
@@ -7,11 +7,10 @@ import textwrap
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "bench"))
 
-import accuracy_report  # noqa: E402
-import accuracy_sweep  # noqa: E402
-import common  # noqa: E402
+from liggghts_membrane.bench import accuracy_report
+from liggghts_membrane.bench import accuracy_sweep
+from liggghts_membrane.bench import common
 
 LOG = """\
 Loop time of 0.5 on 2 procs for 100 steps with 526 atoms

@@ -9,10 +9,9 @@ import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BENCH = os.path.join(os.path.dirname(os.path.dirname(HERE)), "bench")
-sys.path.insert(0, BENCH)
 
-import accuracy_report  # noqa: E402
-import stability_report  # noqa: E402
+from liggghts_membrane.bench import accuracy_report
+from liggghts_membrane.bench import stability_report
 
 
 class Regenerated(unittest.TestCase):

@@ -1,4 +1,4 @@
-"""bench/common.py (the module every benchmark uses) and the row functions of
+"""liggghts_membrane.bench.common (the module every benchmark uses) and the row functions of
 bench/accuracy_report.py, on hand-made input."""
 import math
 import os
@@ -7,10 +7,9 @@ import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "bench"))
 
-import accuracy_report as rep  # noqa: E402
-import common  # noqa: E402
+from liggghts_membrane.bench import accuracy_report as rep
+from liggghts_membrane.bench import common
 
 SCREEN = """\
 LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)
@@ -37,10 +36,14 @@ class Helpers(unittest.TestCase):
         self.assertEqual(common.fmt("text"), "text")
 
     def test_done_counts(self):
-        line = "SHEAR done: escaped 2 chain failures 0 detections 1000 changing the chain 37"
-        self.assertEqual(common.done_counts(line), dict(escaped=2.0, chain_failures=0.0,
+        # the last membrane_counts line of a screen (in.shear_membrane prints one per run)
+        text = ("SHEAR done: escaped 9 chain failures 9\n"
+                "membrane_counts escaped=1 chain_failures=3\n"
+                "membrane_counts escaped=2 chain_failures=0 detections=1000 chain_changes=37\n"
+                "membrane_countsx escaped=5\n")
+        self.assertEqual(common.done_counts(text), dict(escaped=2.0, chain_failures=0.0,
                                                         detections=1000.0, chain_changes=37.0))
-        self.assertEqual(common.done_counts("SHEAR done"), {})
+        self.assertEqual(common.done_counts("SHEAR done: escaped 2 chain failures 0"), {})
 
     def test_messages_and_symptom(self):
         with tempfile.TemporaryDirectory() as d:

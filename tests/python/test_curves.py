@@ -3,8 +3,8 @@ import os
 import tempfile
 import unittest
 
-import synthetic  # noqa: F401  (puts scripts/ on sys.path)
-from biaxial import curves, readers
+from liggghts_membrane import synthetic
+from liggghts_membrane import curves, readers
 
 
 class SyntheticCurve(unittest.TestCase):

@@ -1,11 +1,10 @@
-"""scripts/biaxial/params.py: the variables of hand-written input scripts."""
+"""liggghts_membrane.params: the variables of hand-written input scripts."""
 import os
 import tempfile
 import textwrap
 import unittest
 
-import synthetic  # noqa: F401  (scripts/ on sys.path)
-from biaxial import params
+from liggghts_membrane import params
 
 MAIN = """\
 # a comment: variable kn index 1

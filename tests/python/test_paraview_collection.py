@@ -1,4 +1,4 @@
-"""scripts/paraview_collection.py: which files of a folder enter run.pvd, as what."""
+"""liggghts_membrane.pvd (scripts/paraview_collection.py): which files of a folder enter run.pvd, as what."""
 import contextlib
 import io
 import os
@@ -7,13 +7,12 @@ import tempfile
 import unittest
 import xml.etree.ElementTree as ET
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
-import paraview_collection  # noqa: E402
+from liggghts_membrane import pvd
 
 
 class Collection(unittest.TestCase):
     def data_sets(self, names):
-        root = ET.fromstring(paraview_collection.collection(names))
+        root = ET.fromstring(pvd.collection(names))
         return [(int(d.get("timestep")), int(d.get("part")), d.get("name"), d.get("file"))
                 for d in root.find("Collection").findall("DataSet")]
 
@@ -31,10 +30,10 @@ class Collection(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             open(os.path.join(d, "walls_5.vtp"), "w").close()
             with contextlib.redirect_stderr(io.StringIO()):
-                self.assertEqual(paraview_collection.main(["paraview_collection.py", d]), 0)
+                self.assertEqual(pvd.main(["paraview_collection.py", d]), 0)
             self.assertFalse(os.path.exists(os.path.join(d, "run.pvd")))
             open(os.path.join(d, "particles_5.vtp"), "w").close()
-            self.assertEqual(paraview_collection.main(["paraview_collection.py", d]), 0)
+            self.assertEqual(pvd.main(["paraview_collection.py", d]), 0)
             self.assertEqual(len(ET.parse(os.path.join(d, "run.pvd")).getroot().find("Collection")), 2)
 
 

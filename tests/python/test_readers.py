@@ -6,8 +6,7 @@ import unittest
 
 import numpy as np
 
-import synthetic  # noqa: F401
-from biaxial import readers
+from liggghts_membrane import readers
 
 OUT = """\
 # biaxial test, rigid walls: hand-written
@@ -172,12 +171,51 @@ class Readers(unittest.TestCase):
         np.testing.assert_array_equal(d, [0.001, 0.0015, 0.0005])
 
     def test_increment_keeps_soil_present_in_both(self):
-        from biaxial import field
+        from liggghts_membrane import field
         frames = readers.read_dump(os.path.join(self.dir, "out.dump"))
         ids, x0, du = field.increment(frames[0], frames[5000])
         # 3 is a chain disk, 2 escaped in the second frame: only 1 is left
         np.testing.assert_array_equal(ids, [1])
         np.testing.assert_allclose(du, [[0.001, -0.001]])
+
+
+class KeyValueLines(unittest.TestCase):
+    """The key=value lines printed for programs: fix membrane2d's membrane2d_traffic,
+    in.shear_membrane's membrane_counts, in.prepare's prepared, OUT.params."""
+
+    def test_lines_of_one_tag(self):
+        text = ("fix mem: each rank received 1.97 kB per step ...\n"
+                "membrane2d_traffic id=mem kb_per_step=1.97172 kb_per_detection=8.72 steps=100 "
+                "detections=10 full_passes=3 fix_seconds=0.25 search_seconds=0.0125\n"
+                "membrane2d_trafficx kb_per_step=5\n"
+                "  membrane2d_traffic id=m2 steps=7 loose\n")
+        lines = readers.key_value_lines(text, "membrane2d_traffic")
+        self.assertEqual(lines, [dict(id="mem", kb_per_step=1.97172, kb_per_detection=8.72, steps=100.0,
+                                      detections=10.0, full_passes=3.0, fix_seconds=0.25,
+                                      search_seconds=0.0125),
+                                 dict(id="m2", steps=7.0)])
+        self.assertEqual(readers.key_value_lines(text, "prepared"), [])
+
+    def test_params_file(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "out.txt.params")
+            self.assertEqual(readers.read_params(path), {})
+            with open(path, "w") as f:
+                f.write("shear rate=0.0025 nramp=9200 d50=0.00175 atoms=526\nother nramp=9300\n")
+            self.assertEqual(readers.read_params(path),
+                             dict(rate=0.0025, nramp=9300.0, d50=0.00175, atoms=526.0))
+
+    def test_data_atoms(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "s.data")
+            with open(path, "w") as f:
+                f.write("LIGGGHTS data\n\n2 atoms\n3 atom types\n\nAtoms\n\n"
+                        "1 1 0.001 2500 0.1 0.2 0\n2 2 0.002 2500 0.3 0.4 0  # a comment\n\n"
+                        "Velocities\n\n1 0 0 0 0 0 0\n")
+            a = readers.read_data_atoms(path)
+            np.testing.assert_array_equal(a["type"], [1, 2])
+            np.testing.assert_array_equal(a["diameter"], [0.001, 0.002])
+            np.testing.assert_array_equal(a["y"], [0.2, 0.4])
 
 
 if __name__ == "__main__":

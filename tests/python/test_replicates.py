@@ -10,9 +10,11 @@ import unittest
 
 import numpy as np
 
-import synthetic
-from biaxial import plots, replicates, stats
-from biaxial.curves import NotMeasurable, ratio_from_friction_angle
+from liggghts_membrane import synthetic
+from liggghts_membrane import plots, replicates, report_command, stats
+from liggghts_membrane.curves import NotMeasurable, ratio_from_friction_angle
+
+SCRIPTS = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "scripts"))
 
 # four samples: a common sample-to-sample shift of phi (and of E), the membrane 1 deg
 # lower in phi than the rigid test of the same sample, E not different on average
@@ -43,7 +45,7 @@ class ReplicateReport(unittest.TestCase):
                 synthetic.write_out(os.path.join(folder, f"shear_{case}.txt"), curve, COLUMNS)
             cls.folders.append(folder)
         cls.outdir = os.path.join(cls.tmp.name, "report")
-        script = os.path.join(synthetic.SCRIPTS, "biaxial_report.py")
+        script = os.path.join(SCRIPTS, "biaxial_report.py")
         cls.proc = subprocess.run([sys.executable, script, "--samples", *cls.folders,
                                    "--outdir", cls.outdir], capture_output=True, text=True)
         with open(os.path.join(cls.outdir, "summary.csv")) as f:
@@ -105,7 +107,7 @@ class ReplicateReport(unittest.TestCase):
 
     def test_band_plot(self):
         samples = [{c: r for c, r in s.items()}
-                   for s in (__import__("biaxial_report").load_sample(f, 1.75e-3)
+                   for s in (report_command.load_sample(f, 1.75e-3)
                              for f in self.folders)]
         drawn = plots.stress_strain_band(samples, os.path.join(self.outdir, "band.png"))
         grid, mean, half, n = drawn[("rigid", "s1/s3")]

@@ -8,7 +8,9 @@ import sys
 import tempfile
 import unittest
 
-import synthetic
+from liggghts_membrane import synthetic
+
+SCRIPTS = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "scripts"))
 
 
 class Report(unittest.TestCase):
@@ -22,7 +24,7 @@ class Report(unittest.TestCase):
         rising = synthetic.elastoplastic_curve(ea_end=0.025)     # stops before the peak
         synthetic.write_out(cls.membrane, rising, ["step", "ea", "s1", "s3", "s1/s3", "ev", "el"])
         cls.outdir = os.path.join(d, "report")
-        script = os.path.join(synthetic.SCRIPTS, "biaxial_report.py")
+        script = os.path.join(SCRIPTS, "biaxial_report.py")
         cls.proc = subprocess.run(
             [sys.executable, script, "--rigid", cls.rigid, "--membrane", cls.membrane,
              "--outdir", cls.outdir], capture_output=True, text=True)
@@ -79,7 +81,7 @@ class Report(unittest.TestCase):
 
     def test_single_run(self):
         out = os.path.join(self.tmp.name, "only_membrane")
-        script = os.path.join(synthetic.SCRIPTS, "biaxial_report.py")
+        script = os.path.join(SCRIPTS, "biaxial_report.py")
         proc = subprocess.run([sys.executable, script, "--membrane", self.membrane,
                                "--outdir", out], capture_output=True, text=True)
         self.assertEqual(proc.returncode, 0, proc.stderr)
@@ -88,7 +90,7 @@ class Report(unittest.TestCase):
 
 
     def report(self, *args):
-        script = os.path.join(synthetic.SCRIPTS, "biaxial_report.py")
+        script = os.path.join(SCRIPTS, "biaxial_report.py")
         return subprocess.run([sys.executable, script] + list(args), capture_output=True, text=True)
 
     def test_any_runs_named_by_their_files(self):

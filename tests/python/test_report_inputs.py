@@ -12,16 +12,15 @@ import unittest
 
 import numpy as np
 
-import synthetic
-from synthetic import SCRIPTS
+from liggghts_membrane import synthetic
 
-from biaxial import curves, readers  # noqa: E402
-from biaxial.report import load_run  # noqa: E402
+from liggghts_membrane import curves, readers
+from liggghts_membrane.report import load_run
 
-sys.path.insert(0, SCRIPTS)
-import biaxial_report  # noqa: E402
-import paraview_collection  # noqa: E402
+from liggghts_membrane import report_command
+from liggghts_membrane import pvd
 
+SCRIPTS = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "scripts"))
 REPORT = os.path.join(SCRIPTS, "biaxial_report.py")
 
 
@@ -226,7 +225,7 @@ class Command(unittest.TestCase):
             open(p, "w").close()
             err = io.StringIO()
             with self.assertRaises(SystemExit), contextlib.redirect_stderr(err):
-                biaxial_report.parse_args(["--rigid", p, "--membrane", p])
+                report_command.parse_args(["--rigid", p, "--membrane", p])
             self.assertIn("is given twice", err.getvalue())
 
 
@@ -236,7 +235,7 @@ class ParaviewCollection(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             err = io.StringIO()
             with contextlib.redirect_stderr(err):
-                rc = paraview_collection.main(["paraview_collection.py", d])
+                rc = pvd.main(["paraview_collection.py", d])
             self.assertEqual(rc, 0)
             self.assertIn("no particles_<step>.vtp", err.getvalue())
             self.assertFalse(os.path.exists(os.path.join(d, "run.pvd")))
@@ -244,7 +243,7 @@ class ParaviewCollection(unittest.TestCase):
     def test_missing_folder_is_an_error(self):
         err = io.StringIO()
         with tempfile.TemporaryDirectory() as d, contextlib.redirect_stderr(err):
-            rc = paraview_collection.main(["paraview_collection.py", os.path.join(d, "none")])
+            rc = pvd.main(["paraview_collection.py", os.path.join(d, "none")])
         self.assertEqual(rc, 1)
         self.assertIn("no folder", err.getvalue())
 

@@ -3,8 +3,7 @@ import os
 import tempfile
 import unittest
 
-import synthetic  # noqa: F401  (puts scripts/ on sys.path)
-from biaxial import resume
+from liggghts_membrane import resume
 
 
 def rows(steps):

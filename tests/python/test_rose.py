@@ -5,9 +5,9 @@ import unittest
 
 import numpy as np
 
-import synthetic
-from biaxial import plots, rose
-from biaxial.report import load_run
+from liggghts_membrane import synthetic
+from liggghts_membrane import plots, rose
+from liggghts_membrane.report import load_run
 
 
 class HistogramEstimate(unittest.TestCase):

@@ -3,9 +3,8 @@ import unittest
 
 import numpy as np
 
-import synthetic  # noqa: F401  (puts scripts/ on sys.path)
-from biaxial import curves, particle_strain
-from biaxial.curves import measured
+from liggghts_membrane import curves, particle_strain
+from liggghts_membrane.curves import measured
 
 
 class HalfRise(unittest.TestCase):

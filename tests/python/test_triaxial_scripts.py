@@ -15,8 +15,7 @@ import numpy as np
 EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
                        "triaxial")
 SCRIPT = os.path.join(EXAMPLE, "plot_triaxial.py")
-sys.path.insert(0, EXAMPLE)
-import plot_triaxial  # noqa: E402
+from liggghts_membrane import triaxial_plot
 
 OLD_HEADER = "# step e1 q[Pa] p[Pa] ev R_out[m] membrane_spheres escaped detections\n"
 HEADER = ("# step e1 q[Pa] p[Pa] ev R_out[m] membrane_spheres escaped detections a a_n a_t "
@@ -132,7 +131,7 @@ class Computations(unittest.TestCase):
         # (200, 80, 120) -> 100/(400/3) = 0.75; a zero mean stress is a gap
         c = {"sLW_zz[Pa]": np.array([250.0, 200.0, 0.0]), "sLW_xx[Pa]": np.array([100.0, 80.0, 0.0]),
              "sLW_yy[Pa]": np.array([100.0, 120.0, 0.0])}
-        r = plot_triaxial.love_weber_ratio(c)
+        r = triaxial_plot.love_weber_ratio(c)
         self.assertAlmostEqual(r[0], 1.0, places=14)
         self.assertAlmostEqual(r[1], 0.75, places=14)
         self.assertTrue(math.isnan(r[2]))
@@ -143,7 +142,7 @@ class Computations(unittest.TestCase):
         phi = np.linspace(0.1, 1.5, 7)
         pts = np.column_stack([0.003 + 0.01 * np.cos(phi), -0.002 + 0.01 * np.sin(phi),
                                np.zeros(7)])
-        cx, cy = plot_triaxial.axis_centre(pts)
+        cx, cy = triaxial_plot.axis_centre(pts)
         self.assertAlmostEqual(cx, 0.003, delta=1e-12)
         self.assertAlmostEqual(cy, -0.002, delta=1e-12)
 
@@ -151,7 +150,7 @@ class Computations(unittest.TestCase):
         # 20 mm high, the axis at (4, 1) mm: 10 bins of 2 mm, one level in each, 10 mm
         # at the platens to 11 mm at mid-height
         pts, z, binned = bulged((0.004, 0.001), 0.02, 0.010, 0.001)
-        zb, rb = plot_triaxial.radius_profile(pts, bin_width=0.002)
+        zb, rb = triaxial_plot.radius_profile(pts, bin_width=0.002)
         np.testing.assert_allclose(zb, z, atol=1e-15)
         np.testing.assert_allclose(rb, binned, rtol=1e-12)
         self.assertAlmostEqual(rb[4], 0.010 + 0.001 * math.sin(math.pi * 0.45), delta=1e-14)
@@ -162,39 +161,39 @@ class Computations(unittest.TestCase):
         pts, _, _ = bulged((0.0, 0.0), 0.02, 0.01, 0.0)
         pts = pts[(pts[:, 2] < 0.006) | (pts[:, 2] > 0.008)]    # empties the 4th level
         pts = np.vstack([pts, [[0.01, 0.0, 0.007], [-0.01, 0.0, 0.007]]])  # 2 corners there
-        zb, rb = plot_triaxial.radius_profile(pts, bin_width=0.002)
+        zb, rb = triaxial_plot.radius_profile(pts, bin_width=0.002)
         self.assertEqual(len(zb), 9)
         np.testing.assert_allclose(zb, [0.001, 0.003, 0.005, 0.009, 0.011, 0.013, 0.015, 0.017,
                                         0.019], atol=1e-15)
         np.testing.assert_allclose(rb, 0.01, rtol=1e-12)
         with self.assertRaises(ValueError):
-            plot_triaxial.radius_profile(pts[:2])
+            triaxial_plot.radius_profile(pts[:2])
 
     def test_frame_strains(self):
         # 1.2e-5 per step from the rows (22500, 0.6 %) to (23500, 1.8 %): the shear
         # starts at step 22000; a frame of the isotropic stage at 21000 gets -1.2 %
         steps = np.array([22500.0, 23000.0, 23500.0])
         e1 = np.array([0.006, 0.012, 0.018])
-        eps = plot_triaxial.frame_strains(steps, e1, [21000, 22000, 23000, 24000])
+        eps = triaxial_plot.frame_strains(steps, e1, [21000, 22000, 23000, 24000])
         np.testing.assert_allclose(eps, [-0.012, 0.0, 0.012, 0.024], atol=1e-15)
-        self.assertTrue(np.isnan(plot_triaxial.frame_strains(steps[:1], e1[:1], [22000])).all())
+        self.assertTrue(np.isnan(triaxial_plot.frame_strains(steps[:1], e1[:1], [22000])).all())
 
     def test_frames_drawn(self):
         steps = 22000.0 + 500 * np.arange(1, 11)              # rows at 22500 ... 27000
         e1 = 0.006 * np.arange(1, 11)
         ratio = np.array([0.3, 0.5, 0.7, 0.9, 1.0, 0.95, 0.9, 0.88, 0.87, 0.86])  # peak at row 4
         frames = [20000, 21000, 22000, 23000, 24000, 25000, 26000, 27000]
-        drawn, _ = plot_triaxial.choose_frames(steps, e1, ratio, frames)
+        drawn, _ = triaxial_plot.choose_frames(steps, e1, ratio, frames)
         # start: 22000 (the last at e1 <= 0); peak: row 24500 -> the frame at 24000 or
         # 25000, the nearer first (24000); end: 27000
         self.assertEqual(drawn, [("start of shear", 2), ("peak of q/p", 4), ("end", 7)])
         rising = np.linspace(0.3, 1.2, 10)                     # no peak: start and end
-        self.assertEqual(plot_triaxial.choose_frames(steps, e1, rising, frames)[0],
+        self.assertEqual(triaxial_plot.choose_frames(steps, e1, rising, frames)[0],
                          [("start of shear", 2), ("end", 7)])
         # frames from the shear on only: the first is the start; one frame: drawn once
-        self.assertEqual(plot_triaxial.choose_frames(steps, e1, rising, [23000, 27000])[0],
+        self.assertEqual(triaxial_plot.choose_frames(steps, e1, rising, [23000, 27000])[0],
                          [("start of shear", 0), ("end", 1)])
-        self.assertEqual(plot_triaxial.choose_frames(steps, e1, ratio, [27000])[0],
+        self.assertEqual(triaxial_plot.choose_frames(steps, e1, ratio, [27000])[0],
                          [("start of shear", 0)])
 
     def test_escaped_spheres_are_not_corners(self):
@@ -202,9 +201,9 @@ class Computations(unittest.TestCase):
             path = os.path.join(d, "m.vtp")
             with open(path, "w") as f:
                 f.write(vtp([[1, 2, 3], [4, 5, 6], [7, 8, 9]], [0, 1, 0]))
-            np.testing.assert_array_equal(plot_triaxial.polydata_points(path, corners_only=True),
+            np.testing.assert_array_equal(triaxial_plot.polydata_points(path, corners_only=True),
                                           [[1, 2, 3], [7, 8, 9]])
-            self.assertEqual(len(plot_triaxial.polydata_points(path)), 3)
+            self.assertEqual(len(triaxial_plot.polydata_points(path)), 3)
 
 
 class PlotWithFrames(unittest.TestCase):

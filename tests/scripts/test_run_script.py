@@ -4,7 +4,7 @@ reading the files of a run on other ranks, --write-np), the comparison of the tw
 outputs and its tolerance (CTest: script.run_script.selftest)."""
 import unittest
 
-import run_script
+from liggghts_membrane import run_script
 
 SCRIPT = """#@ restart
 create_box 1 box

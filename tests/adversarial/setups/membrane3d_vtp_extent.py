@@ -5,31 +5,21 @@
 
 prints RESULT vtp_xmin, vtp_xmax, vtp_ymin, ... vtp_zmax over the points of its
 facets (Polys; the escaped spheres' Verts left out), and vtp_points, their count,
-for the adversarial cases (run_cases.py reads RESULT lines).
+for the adversarial cases (run_cases.py reads RESULT lines). The file is read by
+liggghts_membrane.vtk_files (VTK's own reader).
 """
 import sys
-import xml.etree.ElementTree as ET
 
-
-def arrays(piece, section):
-    out = {}
-    node = piece.find(section)
-    if node is None:
-        return out
-    for da in node.iter("DataArray"):
-        out[da.attrib.get("Name")] = (da.text or "").split()
-    return out
+from liggghts_membrane import vtk_files
 
 
 def main(path):
-    root = ET.parse(path).getroot()
-    piece = root.find("PolyData/Piece")
-    xyz = [float(v) for v in arrays(piece, "Points")["Points"]]
-    polys = arrays(piece, "Polys").get("connectivity", [])
-    used = sorted({int(i) for i in polys})
+    poly = vtk_files.read_polydata(path)
+    xyz = vtk_files.points(poly)
+    used = vtk_files.polygon_point_ids(poly)
     names = ("x", "y", "z")
     for axis in range(3):
-        vals = [xyz[3 * i + axis] for i in used] or [float("nan")]
+        vals = list(xyz[used, axis]) or [float("nan")]
         print("RESULT vtp_%smin %.17g" % (names[axis], min(vals)))
         print("RESULT vtp_%smax %.17g" % (names[axis], max(vals)))
     print("RESULT vtp_points %d" % len(used))

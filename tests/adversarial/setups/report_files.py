@@ -19,15 +19,14 @@ writes PATH (an OUT table; with .rose and .dump for the kinds that say so) of th
   rose-garbage  good, PATH.rose with a word in its 3rd block
   dump-cols   good, PATH.dump without the radius column
   sample      PATH is a folder: shear_rigid.txt and shear_membrane.txt (tables only)
-The curve is tests/python/synthetic.py's elastic-plastic law (known constants).
+The curve is liggghts_membrane.synthetic's elastic-plastic law (known constants).
 """
 import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-import synthetic  # noqa: E402
+from liggghts_membrane import synthetic
 
 
 def cut(path, keep):

@@ -33,15 +33,9 @@ the angle Mohr-Coulomb predicts as 45 + phi/2 and Roscoe as 45 + psi/2.
 import math
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 from .curves import NotMeasurable
-
-
-def d50_by_mass(radius):
-    """Diameter below which half the solid area (mass, 2D) lies."""
-    d = np.sort(2.0 * np.asarray(radius, dtype=float))
-    area = np.cumsum(d ** 2)
-    return float(np.interp(0.5 * area[-1], area, d))
 
 
 def soil_mask(frame):
@@ -64,49 +58,34 @@ def increment(frame0, frame1):
     return ids, x0, x1 - x0
 
 
-def local_gradients(x, du, radius, chunk=256):
+def local_gradients(x, du, radius):
     """Least-squares displacement gradient G[i] (2x2, G_ab = d u_a / d x_b) over the
-    neighbours within `radius`; NaN where fewer than 3 neighbours or a degenerate
-    neighbourhood. Neighbour sums by blocks of rows as matrix products with the
-    0/1 neighbour matrix (numpy only, no scipy), coordinates taken relative to
-    the block's centroid to keep the cancellation small."""
+    neighbours within `radius` (scipy.spatial.cKDTree: every pair closer than radius);
+    NaN where fewer than 3 neighbours or a degenerate neighbourhood. The sums over the
+    neighbours are taken of the differences x_j - x_i, u_j - u_i themselves (each pair
+    adds the same products to both of its particles)."""
     n = len(x)
     G = np.full((n, 2, 2), np.nan)
-    count = np.zeros(n, int)
-    r2 = radius * radius
-    cell = np.floor((x - x.min(0)) / radius).astype(int)
-    order = np.lexsort((cell[:, 0], cell[:, 1]))   # row by row: blocks are compact strips
-    for start in range(0, n, chunk):
-        rows = order[start:start + chunk]
-        lo, hi = x[rows].min(0) - radius, x[rows].max(0) + radius
-        cand = np.nonzero(((x >= lo) & (x <= hi)).all(1))[0]   # the block's neighbours
-        origin = x[rows].mean(0)
-        X, Xi, U = x[cand] - origin, x[rows] - origin, du[cand]
-        d2 = ((Xi[:, None, :] - X[None, :, :]) ** 2).sum(-1)
-        M = (d2 <= r2).astype(float)
-        M[rows[:, None] == cand[None, :]] = 0.0
-        m = M.sum(1)
-        k = len(cand)
-        sx, su = M @ X, M @ U                                   # sums of x_j, u_j
-        sxx = (M @ (X[:, :, None] * X[:, None, :]).reshape(k, 4)).reshape(-1, 2, 2)
-        sux = (M @ (U[:, :, None] * X[:, None, :]).reshape(k, 4)).reshape(-1, 2, 2)
-        ui = du[rows]
-        # sum (x_j - x_i)(x_j - x_i)^T and sum (u_j - u_i)(x_j - x_i)^T
-        A = (sxx - Xi[:, :, None] * sx[:, None, :] - sx[:, :, None] * Xi[:, None, :]
-             + m[:, None, None] * Xi[:, :, None] * Xi[:, None, :])
-        B = (sux - ui[:, :, None] * sx[:, None, :] - su[:, :, None] * Xi[:, None, :]
-             + m[:, None, None] * ui[:, :, None] * Xi[:, None, :])
-        det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
-        tr = A[:, 0, 0] + A[:, 1, 1]
-        good = (m >= 3) & (det > 1e-3 * tr * tr)
-        safe = np.where(good, det, 1.0)
-        inv = np.empty_like(A)
-        inv[:, 0, 0], inv[:, 1, 1] = A[:, 1, 1] / safe, A[:, 0, 0] / safe
-        inv[:, 0, 1], inv[:, 1, 0] = -A[:, 0, 1] / safe, -A[:, 1, 0] / safe
-        g = np.einsum("cab,cbd->cad", B, inv)
-        g[~good] = np.nan
-        G[rows] = g
-        count[rows] = m.astype(int)
+    if n == 0:
+        return G, np.zeros(0, int)
+    pairs = cKDTree(x).query_pairs(radius, output_type="ndarray")
+    i, j = pairs[:, 0], pairs[:, 1]
+    dx, du_ = x[j] - x[i], du[j] - du[i]
+    xx = (dx[:, :, None] * dx[:, None, :]).reshape(-1, 4)   # (x_j - x_i)(x_j - x_i)^T
+    ux = (du_[:, :, None] * dx[:, None, :]).reshape(-1, 4)  # (u_j - u_i)(x_j - x_i)^T
+    both = np.concatenate([i, j])
+    count = np.bincount(both, minlength=n)
+    A = np.stack([np.bincount(both, np.tile(xx[:, k], 2), minlength=n) for k in range(4)], 1).reshape(-1, 2, 2)
+    B = np.stack([np.bincount(both, np.tile(ux[:, k], 2), minlength=n) for k in range(4)], 1).reshape(-1, 2, 2)
+    det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
+    tr = A[:, 0, 0] + A[:, 1, 1]
+    good = (count >= 3) & (det > 1e-3 * tr * tr)
+    safe = np.where(good, det, 1.0)
+    inv = np.empty_like(A)
+    inv[:, 0, 0], inv[:, 1, 1] = A[:, 1, 1] / safe, A[:, 0, 0] / safe
+    inv[:, 0, 1], inv[:, 1, 0] = -A[:, 0, 1] / safe, -A[:, 1, 0] / safe
+    g = np.einsum("cab,cbd->cad", B, inv)
+    G[good] = g[good]
     return G, count
 
 

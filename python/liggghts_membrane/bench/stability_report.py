@@ -11,7 +11,7 @@ import re
 
 import numpy as np
 
-from common import fmt, markdown_table as table, read_context, read_rows, sci
+from liggghts_membrane.bench.common import fmt, markdown_table as table, read_context, read_rows, sci
 
 # a number in a message (not the 2 of "membrane2d")
 NUMBER = r"(?<![A-Za-z_\d])[-+]?\d[\d.]*(?:e[-+]?\d+)?"

@@ -111,6 +111,8 @@ def finish_part(out):
         if os.path.exists(part + suffix):
             splice(out + suffix, part + suffix, base, kind)
             os.remove(part + suffix)
+    if os.path.exists(part + ".params"):   # the same parameters (the shear's start values restored)
+        os.replace(part + ".params", out + ".params")
     for s, p in restart_steps(part).items():
         os.replace(p, "%s.restart.%d" % (out, s))
     for p in glob.glob(glob.escape(part) + ".restart.*"):

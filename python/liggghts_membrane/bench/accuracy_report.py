@@ -10,7 +10,7 @@ import os
 
 import numpy as np
 
-from common import fmt, read_context, read_rows, tag
+from liggghts_membrane.bench.common import fmt, read_context, read_rows, tag
 
 PUBLISHED_RATE = 0.02 / 60.0          # the published procedure's 2 %/min
 CASES = ("rigid", "membrane")

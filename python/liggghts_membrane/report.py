@@ -5,6 +5,7 @@ import numpy as np
 
 from . import curves, field, particle_strain, readers
 from .curves import NotMeasurable, measured
+from .grains import d50_by_mass
 
 
 DUMP_COLUMNS = ("id", "x", "y", "radius")   # what the field and D50 need of OUT.dump
@@ -72,7 +73,11 @@ def load_run(name, prefix, d50_default):
         run.roses = readers.read_rose(prefix + ".rose", run.notes)
     else:
         run.notes.append(f"no {os.path.basename(prefix)}.rose: no rose diagrams")
-    run.d50, run.d50_source = d50_default, "--d50 (no dump)"
+    params = readers.read_params(prefix + ".params")
+    if isinstance(params.get("d50"), float) and params["d50"] > 0:
+        run.d50, run.d50_source = params["d50"], f"{os.path.basename(prefix)}.params (no dump)"
+    else:
+        run.d50, run.d50_source = d50_default, "--d50 (no dump)"
     run.curves["E50_p"] = run.curves["nu50_p"] = NotMeasurable("no dump file")
     if not os.path.exists(prefix + ".dump"):
         run.band_reason = NotMeasurable("no dump file")
@@ -96,7 +101,7 @@ def load_run(name, prefix, d50_default):
         run.notes.append(f"{os.path.basename(prefix)}.dump lacks the column(s) {' '.join(lacking)} "
                          f"(needs {' '.join(DUMP_COLUMNS)}): no displacement field")
         return run
-    run.d50 = field.d50_by_mass(first["radius"][field.soil_mask(first)])
+    run.d50 = d50_by_mass(2.0 * first["radius"][field.soil_mask(first)], 2)
     run.d50_source = "by mass, from the first dump frame"
     plan, ea = choose_increments(run.table, run.curves["peak_index"], index)
     run.curves["E50_p"], run.curves["nu50_p"] = particle_strain.particle_secant(

@@ -1,19 +1,13 @@
 """Synthetic runs with known answers, written in the formats of the shear scripts.
 
-Imported by the test modules (unittest discover puts this folder on sys.path);
-it also puts scripts/ on sys.path so that `import biaxial` works.
+Used by the tests (tests/python) and the adversarial report cases
+(tests/adversarial/setups/report_files.py).
 """
 import math
-import os
-import sys
 
 import numpy as np
 
-SCRIPTS = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "scripts"))
-if SCRIPTS not in sys.path:
-    sys.path.insert(0, SCRIPTS)
-
-from biaxial.curves import ratio_from_friction_angle, volume_rate_from_dilatancy  # noqa: E402
+from .curves import ratio_from_friction_angle, volume_rate_from_dilatancy
 
 FULL_HEADER = ("step t ea s1 s3 s1/s3 ev el I sxx_int syy_int C_n W H KE "
                "a theta_a an theta_n f0 at Zm gsi sxx_lw syy_lw").split()

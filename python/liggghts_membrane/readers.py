@@ -1,11 +1,15 @@
 """Readers for the files written by examples/biaxial/in.shear_rigid and in.shear_membrane
 (and by the benchmarks' scripts, bench/in.*): every OUT-table and dump reader of the
-project is here.
+project is here, with the key=value lines that the input scripts and fix membrane2d
+print for programs (key_value_lines) and the OUT.params file of the shear scripts
+(read_params).
 
 The columns of the OUT table are taken by name from its header line (the last
 comment line before the data), so that older runs without the fabric columns,
 or future runs with extra columns, are still readable.
 """
+import os
+
 import numpy as np
 
 # What the shear scripts write; the analysis only needs MECHANICAL_COLUMNS.
@@ -299,13 +303,53 @@ def read_polylines(path):
     return frames
 
 
-def read_data_diameters(path):
-    """The diameters of the Atoms section of a LAMMPS data file of
-    scripts/generate_sample.py (id type diameter density x y z)."""
-    d, inside = [], False
+def key_value_lines(text, tag):
+    """[{key: value}] of the lines of `text` whose first word is `tag`, each followed by
+    key=value words (what the input scripts and fix membrane2d print for programs, e.g.
+    'membrane_counts escaped=2 chain_failures=0'); a value is a float when it reads as
+    one, else the text."""
+    out = []
+    for line in text.splitlines():
+        words = line.split()
+        if not words or words[0] != tag:
+            continue
+        d = {}
+        for w in words[1:]:
+            key, eq, value = w.partition("=")
+            if not eq:
+                continue
+            try:
+                d[key] = float(value)
+            except ValueError:
+                d[key] = value
+        out.append(d)
+    return out
+
+
+def read_params(path):
+    """{key: value} of a parameters file (OUT.params of the shear scripts: lines of
+    key=value words after a tag, shear_loading.inc), every line merged in order (a later
+    key replaces an earlier one); {} when there is no such file."""
+    if not os.path.exists(path):
+        return {}
+    with open(path, errors="replace") as f:
+        text = f.read()
+    out = {}
+    for line in text.splitlines():
+        words = line.split()
+        if words:
+            for d in key_value_lines(line, words[0]):
+                out.update(d)
+    return out
+
+
+def read_data_atoms(path):
+    """The Atoms section of a LAMMPS data file of atom style sphere (the sample command's,
+    liggghts_membrane.sample): {id, type, diameter, density, x, y, z: array}."""
+    rows, inside = [], False
     with open(path) as f:
         for line in f:
-            t = line.split()
+            t = line.split("#")[0].split()
             if not t:
                 continue
             if t[0] == "Atoms":
@@ -314,5 +358,11 @@ def read_data_diameters(path):
             if inside:
                 if not t[0].isdigit():
                     break
-                d.append(float(t[2]))
-    return np.array(d)
+                rows.append([float(w) for w in t[:7]])
+    data = np.array(rows, dtype=float).reshape(-1, 7)
+    return {name: data[:, k] for k, name in enumerate(("id", "type", "diameter", "density", "x", "y", "z"))}
+
+
+def read_data_diameters(path):
+    """The diameters of the Atoms section of a LAMMPS data file (read_data_atoms)."""
+    return read_data_atoms(path)["diameter"]

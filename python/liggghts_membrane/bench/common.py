@@ -3,7 +3,7 @@ process with its CPU time and a timeout, or a run kept in a folder and reused),
 the run cache (a run folder's meta.json, reused while its parameters are the same),
 the timings and messages of a run (the log's 'Loop time' lines, the screen's ERROR
 and WARNING lines), the frozen executable and input scripts of a sweep, the
-parameters of the input scripts (scripts/biaxial/params.py) and the CSV / context
+parameters of the input scripts (liggghts_membrane.params) and the CSV / context
 files a report is made from.
 
 A sweep is plan / run / report: the plan is the list of cases, `run` executes the
@@ -23,16 +23,16 @@ import sys
 import threading
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+# the repository (this file is python/liggghts_membrane/bench/common.py) and its bench/
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+HERE = os.path.join(ROOT, "bench")
 EXAMPLES = os.path.join(ROOT, "examples", "biaxial")
 MESHES = os.path.join(EXAMPLES, "meshes")
 EXE = os.path.join(ROOT, "build", "app", "liggghts-membrane")
 GENERATOR = os.path.join(ROOT, "scripts", "generate_sample.py")
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
 
-from biaxial import params  # noqa: E402
-from biaxial.readers import read_output  # noqa: E402
+from liggghts_membrane import params
+from liggghts_membrane.readers import key_value_lines, read_output, read_params
 
 _LOCK = threading.Lock()
 _LOOP = re.compile(r"Loop time of ([-+.\deE]+) on (\d+) procs for (\d+) steps")
@@ -224,17 +224,14 @@ def messages(screen, benign=()):
     return err, warns
 
 
-def done_counts(done_line):
-    """escaped, chain failures, detections and chain changes of a 'SHEAR done' /
-    'PRESSURE done' line (those it has)."""
-    out = {}
-    m = re.search(r"escaped (\S+) chain failures (\S+)", done_line)
-    if m:
-        out["escaped"], out["chain_failures"] = float(m.group(1)), float(m.group(2))
-    m = re.search(r"detections (\S+) changing the chain (\S+)", done_line)
-    if m:   # per side: how often a detection changed the chain (what skipping it would risk)
-        out["detections"], out["chain_changes"] = float(m.group(1)), float(m.group(2))
-    return out
+def done_counts(text):
+    """The counts of fix membrane2d at the end of a shear or pressure run: the last
+    'membrane_counts key=value ...' line the input script prints (in.shear_membrane:
+    escaped, chain_failures, detections, chain_changes -- per side, how often a
+    detection changed the chain, what skipping it would risk; in.stability_pressure:
+    escaped, chain_failures, widenings); {} without one (a rigid run)."""
+    lines = key_value_lines(text, "membrane_counts")
+    return lines[-1] if lines else {}
 
 
 # ----------------------------------------------------------------------------- the run cache
@@ -401,8 +398,9 @@ class Shear:
     def __init__(self, out, text):
         self.table = read_output(out)
         self.text = text
-        self.nramp = int(re.search(r"after a ramp of (\d+) steps", text).group(1))
-        self.atoms = int(re.search(r"for \d+ steps with (\d+) atoms", text).group(1))
+        params = read_params(out + ".params")      # what shear_loading.inc prints there
+        self.nramp = int(params["nramp"])
+        self.atoms = int(params["atoms"])
 
     def after_ramp(self):
         """Mask of the OUT rows after the platen speed ramp."""
