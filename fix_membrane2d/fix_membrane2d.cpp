@@ -33,8 +33,8 @@ namespace {
 const MembraneTraits TRAITS{2,
                             "ylo",
                             "yhi",
-                            "ylo Y: the bottom platen surface (length), a number or v_name",
-                            "yhi Y: the top platen surface (length), a number or v_name",
+                            "ylo Y: the lower platen surface (length), a number or v_name",
+                            "yhi Y: the upper platen surface (length), a number or v_name",
                             "disks",
                             DEFAULT_TOLERANCE,
                             MOST_TOLERANCE};

@@ -329,7 +329,7 @@ void MembraneGather::report_traffic(const char *id, bigint step, long long detec
   MPI_Reduce(seconds, slowest, 2, MPI_DOUBLE, MPI_MAX, 0, world);
   if (comm->me != 0) return;
   const std::string text =
-      membrane::traffic_summary(id, traffic_.step_bytes, traffic_.detection_bytes,
+      membrane::traffic_summary(traffic_.step_bytes, traffic_.detection_bytes,
                                 step - traffic_.first_step, detections - traffic_.first_detections,
                                 traffic_.full_passes, slowest[0], slowest[1]);
   if (screen) fprintf(screen, "%s%s\n", prefix_.c_str(), text.c_str());

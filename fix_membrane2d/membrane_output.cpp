@@ -108,17 +108,17 @@ std::string restart_other_definition(const std::string &id)
          "start from 0";
 }
 
-std::string traffic_summary(const std::string &id, double step_bytes, double detection_bytes,
+std::string traffic_summary(double step_bytes, double detection_bytes,
                             long long steps, long long detections, long long full_passes,
                             double fix_seconds, double search_seconds)
 {
   char buf[560];
   std::snprintf(buf, sizeof(buf),
-                "%s: each rank received %.3g kB per step (chain, escaped and watched disks) and "
+                "each rank received %.3g kB per step (chain, escaped and watched disks) and "
                 "%.3g kB per detection (bands, search results) over %lld steps with %lld "
                 "detections (%lld of them a pass over all disks); the fix took %.3g s (slowest "
                 "rank), %.3g s of it in chain searches (one rank per side)",
-                id.c_str(), steps > 0 ? step_bytes / steps / 1e3 : step_bytes / 1e3,
+                steps > 0 ? step_bytes / steps / 1e3 : step_bytes / 1e3,
                 detections > 0 ? detection_bytes / detections / 1e3 : 0.0, steps, detections,
                 full_passes, fix_seconds, search_seconds);
   return buf;

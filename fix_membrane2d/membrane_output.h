@@ -68,7 +68,7 @@ std::string restart_other_definition(const std::string &id);
 // disk of the rank, the others at the band candidates only), and the seconds
 // the fix and its chain searches took on the slowest rank (the info line at the
 // end of a run; a run of 0 steps counts its setup as one).
-std::string traffic_summary(const std::string &id, double step_bytes, double detection_bytes,
+std::string traffic_summary(double step_bytes, double detection_bytes,
                             long long steps, long long detections, long long full_passes,
                             double fix_seconds, double search_seconds);
 

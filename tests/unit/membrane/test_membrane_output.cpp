@@ -86,14 +86,14 @@ TEST(MembraneOutput, WarningsNameTheNumbers)
 
 TEST(MembraneOutput, TrafficPerStepAndPerDetection)
 {
-  EXPECT_EQ(traffic_summary("mem", 199172.0, 87200.0, 100, 10, 3, 0.25, 0.0125),
-            "mem: each rank received 1.99 kB per step (chain, escaped and watched disks) and "
+  EXPECT_EQ(traffic_summary(199172.0, 87200.0, 100, 10, 3, 0.25, 0.0125),
+            "each rank received 1.99 kB per step (chain, escaped and watched disks) and "
             "8.72 kB per detection (bands, search results) over 100 steps with 10 detections (3 "
             "of them a pass over all disks); the fix took 0.25 s (slowest rank), 0.0125 s of it "
             "in chain searches (one rank per side)");
   // a run of 0 steps: its setup's gather, no detection
-  EXPECT_EQ(traffic_summary("m", 1972.0, 0.0, 0, 0, 0, 0.0, 0.0),
-            "m: each rank received 1.97 kB per step (chain, escaped and watched disks) and 0 kB "
+  EXPECT_EQ(traffic_summary(1972.0, 0.0, 0, 0, 0, 0.0, 0.0),
+            "each rank received 1.97 kB per step (chain, escaped and watched disks) and 0 kB "
             "per detection (bands, search results) over 0 steps with 0 detections (0 of them a "
             "pass over all disks); the fix took 0 s (slowest rank), 0 s of it in chain searches "
             "(one rank per side)");
