@@ -7,7 +7,7 @@
 
 using membrane::SideChain;
 
-void MembraneAtoms::add_forces(const SideChain (&chains)[2], const MembraneSideData (&sides)[2],
+void MembraneAtoms::add_forces(const SideChain (&chains)[2], const membrane::SideData (&sides)[2],
                                const membrane::SideLoad (&loads)[2], double pressure,
                                double thickness)
 {
@@ -17,13 +17,13 @@ void MembraneAtoms::add_forces(const SideChain (&chains)[2], const MembraneSideD
     if (!chains[k].active) continue;
     const std::vector<membrane::Disk> &chain = sides[k].chain_disks;
     for (std::size_t c = 0; c < chain.size(); c++) {
-      const int i = atom->map(static_cast<int>(chain[c].tag));
+      const int i = atom->map(chain[c].tag);
       if (i < 0 || i >= nlocal) continue;
       f[i][0] += loads[k].forces[c].x();
       f[i][1] += loads[k].forces[c].y();
     }
-    for (long tag : chains[k].escaped_tags) {
-      const int i = atom->map(static_cast<int>(tag));
+    for (AtomId tag : chains[k].escaped_tags) {
+      const int i = atom->map(tag);
       if (i < 0 || i >= nlocal) continue;
       const membrane::Disk d{tag, atom->x[i][0], atom->x[i][1], atom->radius[i]};
       const Eigen::Vector2d push = membrane::escapee_force(d, chains[k].side, pressure, thickness);
@@ -42,13 +42,13 @@ void MembraneAtoms::flags(const SideChain (&chains)[2], double *&flag, int &capa
   }
   const int nlocal = atom->nlocal;
   std::fill(flag, flag + nlocal, 0.0);
-  auto mark = [&](long tag, double value) {
-    const int i = atom->map(static_cast<int>(tag));
+  auto mark = [&](AtomId tag, double value) {
+    const int i = atom->map(tag);
     if (i >= 0 && i < nlocal) flag[i] = value;
   };
   for (int k = membrane::LEFT; k <= membrane::RIGHT; k++) {
     if (!chains[k].active) continue;
-    for (long tag : chains[k].chain_tags) mark(tag, k == membrane::LEFT ? LEFT_CHAIN : RIGHT_CHAIN);
-    for (long tag : chains[k].escaped_tags) mark(tag, ESCAPEE);
+    for (AtomId tag : chains[k].chain_tags) mark(tag, k == membrane::LEFT ? LEFT_CHAIN : RIGHT_CHAIN);
+    for (AtomId tag : chains[k].escaped_tags) mark(tag, ESCAPEE);
   }
 }

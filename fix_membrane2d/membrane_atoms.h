@@ -16,7 +16,7 @@ class MembraneAtoms : protected LAMMPS_NS::Pointers {
  public:
   explicit MembraneAtoms(LAMMPS_NS::LAMMPS *lammps) : Pointers(lammps) {}
   // The loads on the owned chain disks, and the escapees pushed back.
-  void add_forces(const membrane::SideChain (&chains)[2], const MembraneSideData (&sides)[2],
+  void add_forces(const membrane::SideChain (&chains)[2], const membrane::SideData (&sides)[2],
                   const membrane::SideLoad (&loads)[2], double pressure, double thickness);
   // Per-atom flags (LEFT_CHAIN, RIGHT_CHAIN, ESCAPEE, else 0) of the owned atoms.
   enum Flag { NONE = 0, LEFT_CHAIN = 1, RIGHT_CHAIN = 2, ESCAPEE = 3 };

@@ -8,15 +8,14 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
-#include "error.h"
 #include "neighbor.h"
 #include "update.h"
 
 #include "allgather.h"
 #include "atom_faults.h"
+#include "style_args.h"
 #include "style_error.h"
 #include "membrane_output.h"
-#include "membrane_record.h"
 #include "stability_checks.h"
 
 using namespace LAMMPS_NS;
@@ -24,11 +23,7 @@ using membrane::Disk;
 using membrane::LEFT;
 using membrane::RIGHT;
 using membrane::Side;
-
-namespace {
-enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, B_TYPE, BAND_FIELDS };
-enum WatchField { W_ENTRY, W_X, W_Y, W_R, W_STEP, W_TYPE, WATCH_FIELDS };
-} // namespace
+using membrane::SideData;
 
 ScopedSeconds::ScopedSeconds(double &total) : total_(total), start_(MPI_Wtime()) {}
 
@@ -37,8 +32,14 @@ ScopedSeconds::~ScopedSeconds()
   total_ += MPI_Wtime() - start_;
 }
 
+void MembraneGather::allgather(double &bytes)
+{
+  allgather_doubles(world, send_, recv_, counts_, displs_);
+  bytes += membrane::gathered_bytes(recv_.size(), counts_.size());
+}
+
 void MembraneGather::bands(const membrane::Platens &platens, double width, const bool active[2],
-                           MembraneSideData (&sides)[2])
+                           SideData (&sides)[2])
 {
   // One pass over the local disks (or the candidates) for both sides: the
   // slices are the same.
@@ -46,9 +47,8 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
                                            active[RIGHT] ? &sides[RIGHT].slices : nullptr};
   const std::vector<int> &cands = candidates_.candidates();
   const int nlocal = atom->nlocal;
-  bool from_candidates = candidates_usable(width, active);
+  bool from_candidates = candidates_.usable(width, active, neighbor->ncalls, nlocal);
   auto candidate = [&](int k) { return cands[k]; };
-  auto every_disk = [](int k) { return k; };
   if (from_candidates) {
     extents(platens, width, active, sides, static_cast<int>(cands.size()), candidate);
     // the candidates give the bands of a full pass unless another disk might
@@ -59,46 +59,21 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
     from_candidates = covered != 0;
   }
   if (!from_candidates) {
-    extents(platens, width, active, sides, nlocal, every_disk);
+    extents(platens, width, active, sides, nlocal, [](int k) { return k; });
     traffic_.full_passes++;
     remember_candidates(width, active, slices);
   }
 
-  double **x = atom->x;
-  double *radius = atom->radius;
   send_.clear();
   const int nsend = from_candidates ? static_cast<int>(cands.size()) : nlocal;
   for (int k = 0; k < nsend; k++) {
     const int i = from_candidates ? candidate(k) : k;
     if (!(atom->mask[i] & groupbit_)) continue;
-    for (int s = LEFT; s <= RIGHT; s++) {
-      if (!active[s] ||
-          !sides[s].slices.contains_in_slice(slice_of_atom_[i], x[i][0], radius[i], width))
-        continue;
-      const double rec[BAND_FIELDS] = {static_cast<double>(s),
-                                       static_cast<double>(atom->tag[i]),
-                                       x[i][0],
-                                       x[i][1],
-                                       radius[i],
-                                       static_cast<double>(atom->type[i])};
-      send_.insert(send_.end(), rec, rec + BAND_FIELDS);
-    }
+    const Disk d{atom->tag[i], atom->x[i][0], atom->x[i][1], atom->radius[i]};
+    membrane::put_band_records(send_, sides, active, slice_of_atom_[i], d, width);
   }
-  allgather_doubles(world, send_, recv_, counts_, displs_);
-  traffic_.detection_bytes += gathered_bytes();
-
-  // No sorting: the chain search depends on the set of disks, not on their
-  // order (ties are broken by tag), so any rank count gives the same chain.
-  for (MembraneSideData &s : sides) {
-    s.band.clear();
-    s.band_type.clear();
-  }
-  for (std::size_t k = 0; k < recv_.size(); k += BAND_FIELDS) {
-    const double *rec = recv_.data() + k;
-    MembraneSideData &s = sides[static_cast<int>(rec[B_SIDE])];
-    s.band.push_back(Disk{static_cast<long>(rec[B_TAG]), rec[B_X], rec[B_Y], rec[B_R]});
-    s.band_type.push_back(static_cast<int>(rec[B_TYPE]));
-  }
+  allgather(traffic_.detection_bytes);
+  membrane::take_bands(recv_, sides);
   for (int k = LEFT; k <= RIGHT; k++)
     if (active[k] && sides[k].band.empty())
       style_error(lmp, prefix_, std::string("no atoms in the ") + membrane::side_name(k) + " band");
@@ -107,21 +82,15 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
 // The slices' extents over the n disks local_index(0..n-1), merged over the ranks.
 template <class Index>
 void MembraneGather::extents(const membrane::Platens &platens, double width, const bool active[2],
-                             MembraneSideData (&sides)[2], int n, Index local_index)
+                             SideData (&sides)[2], int n, Index local_index)
 {
-  for (int k = LEFT; k <= RIGHT; k++)
-    if (active[k]) sides[k].slices.reset(k == LEFT ? Side::Left : Side::Right, platens, width);
-  const membrane::BandSlices &slicing = sides[active[LEFT] ? LEFT : RIGHT].slices;
-  double **x = atom->x;
-  double *radius = atom->radius;
+  membrane::reset_slices(sides, active, platens, width);
   slice_of_atom_.resize(atom->nlocal);
   for (int k = 0; k < n; k++) {
     const int i = local_index(k);
-    if (!(atom->mask[i] & groupbit_)) continue;
-    const int slice = slicing.slice_of(x[i][1]);
-    slice_of_atom_[i] = slice;
-    for (int s = LEFT; s <= RIGHT; s++)
-      if (active[s]) sides[s].slices.add_in_slice(slice, x[i][0], radius[i]);
+    if (atom->mask[i] & groupbit_)
+      slice_of_atom_[i] =
+          membrane::add_to_slices(sides, active, atom->x[i][0], atom->x[i][1], atom->radius[i]);
   }
   for (int k = LEFT; k <= RIGHT; k++) {
     if (!active[k]) continue;
@@ -133,25 +102,12 @@ void MembraneGather::extents(const membrane::Platens &platens, double width, con
   }
 }
 
-// LIGGGHTS rebuilds its neighbour lists (and only then moves atoms between
-// ranks or reorders them) before any atom has moved half a skin from where it
-// was at the last build, when it checks every step (neigh_modify every 1
-// delay 0 check yes): between two builds no disk moves more than a skin from
-// where it was when the candidates were taken. Without that guarantee every
-// detection is a full pass.
-bool MembraneGather::candidates_usable(double width, const bool active[2]) const
-{
-  return candidates_.valid() && candidates_.width() == width && candidates_neighbour_builds_ ==
-         neighbor->ncalls && candidates_nlocal_ == atom->nlocal &&
-         candidates_active_[LEFT] == active[LEFT] && candidates_active_[RIGHT] == active[RIGHT];
-}
-
 void MembraneGather::remember_candidates(double width, const bool active[2],
                                          const membrane::BandSlices *const slices[2])
 {
   candidates_.clear();
-  if (!(neighbor->every == 1 && neighbor->delay == 0 && neighbor->dist_check &&
-        !neighbor->build_once))
+  if (!membrane::BandCandidates::motion_bounded(neighbor->every, neighbor->delay,
+                                                neighbor->dist_check, neighbor->build_once))
     return;
   std::vector<membrane::BandDisk> disks;
   for (int i = 0; i < atom->nlocal; i++)
@@ -160,13 +116,10 @@ void MembraneGather::remember_candidates(double width, const bool active[2],
   // candidates reach one band width further in than the band
   candidates_.build(disks, slices[LEFT], slices[RIGHT], width, width, neighbor->skin,
                     domain->boxlo[1], domain->boxhi[1]);
-  candidates_neighbour_builds_ = neighbor->ncalls;
-  candidates_nlocal_ = atom->nlocal;
-  candidates_active_[LEFT] = active[LEFT];
-  candidates_active_[RIGHT] = active[RIGHT];
+  candidates_.stamp(neighbor->ncalls, atom->nlocal, active);
 }
 
-void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideData (&sides)[2],
+void MembraneGather::search(membrane::ChainFinder &finder, const SideData (&sides)[2],
                             const bool pending[2], const membrane::Platens &platens,
                             double tolerance, membrane::ChainResult (&results)[2])
 {
@@ -196,29 +149,23 @@ void MembraneGather::search(membrane::ChainFinder &finder, const MembraneSideDat
   }
 }
 
+// Atoms change index or rank only when LIGGGHTS rebuilds its neighbour lists:
+// looked up (atom->map) again only then or when the list changed.
 template <class TagOf>
-const std::vector<int> &MembraneGather::owned(OwnedIndices &cache, std::size_t n, TagOf tag_of)
+const std::vector<int> &MembraneGather::owned(membrane::OwnedIndices &cache, std::size_t n,
+                                              TagOf tag_of)
 {
-  std::uint64_t hash = n;
-  for (std::size_t k = 0; k < n; k++)
-    hash = hash * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(tag_of(k));
-  if (cache.neighbour_builds == neighbor->ncalls && cache.nlocal == atom->nlocal &&
-      cache.tags_hash == hash && cache.index.size() == n)
-    return cache.index;
-  cache.index.resize(n);
-  for (std::size_t k = 0; k < n; k++) {
-    const int i = atom->map(static_cast<int>(tag_of(k)));
-    cache.index[k] = i >= 0 && i < atom->nlocal ? i : -1;
-  }
-  cache.neighbour_builds = neighbor->ncalls;
-  cache.nlocal = atom->nlocal;
-  cache.tags_hash = hash;
+  if (cache.stale(neighbor->ncalls, atom->nlocal, n, tag_of))
+    for (std::size_t k = 0; k < n; k++) {
+      const int i = atom->map(tag_of(k));
+      cache.index[k] = i >= 0 && i < atom->nlocal ? i : -1;
+    }
   return cache.index;
 }
 
-MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::WatchEntry> &list,
-                                                membrane::SideChain (&chains)[2],
-                                                bool watch_relations, MembraneSideData (&sides)[2])
+membrane::Watched MembraneGather::watched(const std::vector<membrane::WatchEntry> &list,
+                                          membrane::SideChain (&chains)[2], bool watch_relations,
+                                          SideData (&sides)[2])
 {
   double **x = atom->x;
   double local_displacement = 0.0;
@@ -236,7 +183,6 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
         local_displacement = std::max(local_displacement, dx * dx + dy * dy);
       }
     }
-  local_displacement = std::sqrt(local_displacement);
 
   // each rank sends its owned watched disks (by their place in the list, the
   // same on every rank) and its own maximum in one allgather
@@ -246,32 +192,23 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
   for (std::size_t k = 0; k < list.size(); k++) {
     const int i = index[k];
     if (i < 0) continue;
-    const double *v = atom->v[i];
-    const double rec[WATCH_FIELDS] = {
-        static_cast<double>(k),
-        x[i][0],
-        x[i][1],
-        atom->radius[i],
-        stability::step_fraction(v[0], v[1], v[2], update->dt, atom->radius[i]),
-        static_cast<double>(atom->type[i])};
-    send_.insert(send_.end(), rec, rec + WATCH_FIELDS);
+    const double *v = atom->v[i], r = atom->radius[i];
+    membrane::put_watched(send_, k, Disk{list[k].tag, x[i][0], x[i][1], r},
+                          stability::step_fraction(v[0], v[1], v[2], update->dt, r),
+                          atom->type[i]);
   }
-  const double trailer[WATCH_FIELDS] = {-1.0, local_displacement, 0.0, 0.0, 0.0, 0.0};
-  send_.insert(send_.end(), trailer, trailer + WATCH_FIELDS);
-  allgather_doubles(world, send_, recv_, counts_, displs_);
-  traffic_.step_bytes += gathered_bytes();
+  membrane::put_band_displacement(send_, std::sqrt(local_displacement));
+  allgather(traffic_.step_bytes);
 
   const std::string step = std::to_string(update->ntimestep);
-  if (recv_.size() != WATCH_FIELDS * (list.size() + comm->nprocs))
+  if (!membrane::watched_complete(recv_.size(), list.size(), comm->nprocs))
     style_error(lmp, prefix_,
                 "a chain, escaped or band disk was lost at step " + step +
                     " (it left the box, or its position became infinite or NaN under an infinite "
                     "force; 'thermo_modify lost ignore' hides this): the membrane cannot hold a "
                     "sample whose outer disks fly off; check the time step, the pressure and the "
                     "platens");
-  bool finite = true;
-  for (double v : recv_) finite = finite && std::isfinite(v);
-  if (!finite) {
+  if (!std::all_of(recv_.begin(), recv_.end(), [](double v) { return std::isfinite(v); })) {
     // every rank holds recv_: all come here, and find the atom together
     const std::string fault = group_atom_fault(lmp, groupbit_, 2);
     style_error(lmp, prefix_,
@@ -280,36 +217,7 @@ MembraneGather::Watched MembraneGather::watched(const std::vector<membrane::Watc
                                     "loading rate"
                               : fault);
   }
-  for (int k = LEFT; k <= RIGHT; k++) {
-    sides[k].chain_disks.resize(chains[k].active ? chains[k].chain_tags.size() : 0);
-    sides[k].chain_types.resize(sides[k].chain_disks.size());
-  }
-  Watched out;
-  for (std::size_t k = 0; k < recv_.size(); k += WATCH_FIELDS) {
-    const double *rec = recv_.data() + k;
-    if (rec[W_ENTRY] < 0.0) {
-      out.band_displacement = std::max(out.band_displacement, rec[W_X]);
-      continue;
-    }
-    const membrane::WatchEntry &e = list[static_cast<std::size_t>(rec[W_ENTRY])];
-    const long tag = e.tag;
-    const Disk d{tag, rec[W_X], rec[W_Y], rec[W_R]};
-    for (int side = LEFT; side <= RIGHT; side++) {
-      if (e.chain_position[side] >= 0) {
-        sides[side].chain_disks[e.chain_position[side]] = d;
-        sides[side].chain_types[e.chain_position[side]] = static_cast<int>(rec[W_TYPE]);
-        // ties: the lower ID (the records come in the ranks' order)
-        if (rec[W_STEP] > out.chain_step ||
-            (rec[W_STEP] == out.chain_step && out.chain_step_tag >= 0 &&
-             tag < out.chain_step_tag)) {
-          out.chain_step = rec[W_STEP];
-          out.chain_step_tag = tag;
-        }
-      }
-      if (e.band_index[side] >= 0) chains[side].now[e.band_index[side]] = d;
-    }
-  }
-  return out;
+  return membrane::take_watched(recv_, list, chains, sides);
 }
 
 void MembraneGather::start_traffic(bigint step, long long detections)
@@ -317,8 +225,8 @@ void MembraneGather::start_traffic(bigint step, long long detections)
   // the group or the atoms may have changed between runs, and LIGGGHTS counts
   // the neighbour builds of each run from 0 (Verlet::setup)
   candidates_.clear();
-  watched_owned_ = band_owned_[LEFT] = band_owned_[RIGHT] = OwnedIndices();
-  traffic_ = Traffic();
+  watched_owned_ = band_owned_[LEFT] = band_owned_[RIGHT] = membrane::OwnedIndices();
+  traffic_ = membrane::Traffic();
   traffic_.first_step = step;
   traffic_.first_detections = detections;
 }
@@ -336,15 +244,10 @@ void MembraneGather::report_traffic(const char *id, bigint step, long long detec
   if (logfile) fprintf(logfile, "%s%s\n", prefix_.c_str(), text.c_str());
 }
 
-double MembraneGather::gathered_bytes() const
+void MembraneGather::check_enclosed(const ScalarInput &ylo_in, double ylo,
+                                    const ScalarInput &yhi_in, double yhi)
 {
-  return sizeof(double) * static_cast<double>(recv_.size()) +
-         sizeof(int) * static_cast<double>(counts_.size());
-}
-
-void MembraneGather::group_y_range(double &lo, double &hi)
-{
-  double local[2] = {1e300, -1e300};
+  double local[2] = {1e300, -1e300}, lo, hi;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit_)) continue;
     local[0] = std::min(local[0], atom->x[i][1]);
@@ -352,4 +255,8 @@ void MembraneGather::group_y_range(double &lo, double &hi)
   }
   MPI_Allreduce(&local[0], &lo, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(&local[1], &hi, 1, MPI_DOUBLE, MPI_MAX, world);
+  const std::string below = membrane::enclose_problem(false, ylo, lo);
+  if (!below.empty()) style_error(lmp, "", keyword_message(prefix_, "ylo", ylo_in.text(), below));
+  const std::string above = membrane::enclose_problem(true, yhi, hi);
+  if (!above.empty()) style_error(lmp, "", keyword_message(prefix_, "yhi", yhi_in.text(), above));
 }

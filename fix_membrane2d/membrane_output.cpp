@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "number_text.h"
 #include "stability_checks.h"
 
 namespace membrane {
@@ -28,11 +29,19 @@ std::string band_problem(double band, double d50)
          g(DEFAULT_BAND) + " x D50 = " + g(DEFAULT_BAND * d50) + ")";
 }
 
-std::string chain_step_warning(long tag, double fraction, long long step)
+std::string enclose_problem(bool top, double platen, double centre)
+{
+  if (top ? !(centre > platen) : !(centre < platen)) return "";
+  return "is " + number_text(platen) + (top ? ", below the highest" : ", above the lowest") +
+         " disk centre of the group (y = " + number_text(centre) +
+         "); the platens must enclose the sample";
+}
+
+std::string chain_step_warning(AtomId tag, double fraction, long long step)
 {
   char buf[512];
   std::snprintf(buf, sizeof(buf),
-                "chain disk %ld moved %.3g of its radius in one step at step %lld (limit %g; "
+                "chain disk %d moved %.3g of its radius in one step at step %lld (limit %g; "
                 "quasi-static chains move < %g): its speed jumped. Ramp the pressure instead of "
                 "jumping it, or reduce the time step or the loading rate (warned once; f_ID[15] "
                 "is the current value)",
@@ -142,7 +151,7 @@ void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyli
   std::fprintf(fp, "ITEM: CHAIN %s %zu (tag x y r fx fy)\n", side, chain.size());
   for (std::size_t c = 0; c < chain.size(); c++) {
     const Disk &d = chain[c];
-    std::fprintf(fp, "%ld %.10g %.10g %.10g %.10g %.10g\n", d.tag, d.x, d.y, d.r, forces[c].x(),
+    std::fprintf(fp, "%d %.10g %.10g %.10g %.10g %.10g\n", d.tag, d.x, d.y, d.r, forces[c].x(),
                  forces[c].y());
   }
 }

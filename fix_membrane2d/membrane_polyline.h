@@ -1,0 +1,38 @@
+// The polyline file of fix membrane2d (keyword polyline, doc/fix_membrane2d.md):
+// the chains of both sides, one frame per step written, each step once
+// (membrane::polyline_frame_start). No LIGGGHTS.
+#ifndef LIGGGHTS_MEMBRANE_MEMBRANE_POLYLINE_H
+#define LIGGGHTS_MEMBRANE_MEMBRANE_POLYLINE_H
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "membrane_output.h"
+#include "membrane_state.h"
+
+namespace membrane {
+
+class PolylineFile {
+ public:
+  PolylineFile() = default;
+  ~PolylineFile();
+  PolylineFile(const PolylineFile &) = delete;
+  PolylineFile &operator=(const PolylineFile &) = delete;
+
+  // Creates (empties) `path`: "" when done, else why not.
+  std::string open(const std::string &path);
+  bool is_open() const { return out_ != nullptr; }
+  // The frame of `step` (replacing the frames at or after it): "" when
+  // written, else why the file could not be cut.
+  std::string write(long long step, const SideChain (&chains)[2], const SideData (&sides)[2],
+                    const SideLoad (&loads)[2]);
+
+ private:
+  std::FILE *out_ = nullptr;
+  std::vector<PolylineFrame> frames_; // steps written, where each starts
+};
+
+} // namespace membrane
+
+#endif
