@@ -12,14 +12,15 @@
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "memory.h"
 #include "update.h"
 
 #include "contact_scales.h"
 #include "membrane_output.h"
-#include "membrane_vtk.h"
 #include "membrane_record.h"
 #include "membrane_step.h"
+#include "membrane_vtk.h"
 #include "restart_envelope.h"
 #include "stability_checks.h"
 #include "style_args.h"
@@ -43,14 +44,14 @@ const char *const USE_SIDES = "sides left|right|both";
 const std::string USE_BAND =
     "band W: the width of the side bands (length), default " + number_text(DEFAULT_BAND) + " x D50";
 const char *const USE_THICKNESS = "thickness T: the out-of-plane thickness (length), default 1";
+const char *const USE_POLYLINE = "polyline N FILE: write the chains every N >= 1 steps to FILE";
 
 } // namespace
 
 /* ---------------------------------------------------------------------- */
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
-  : MembraneFix(lammps, narg, arg, TRAITS), polyline(lammps, prefix),
-    gather(lammps, prefix, groupbit), atoms(lammps)
+  : MembraneFix(lammps, narg, arg, TRAITS), gather(lammps, prefix, groupbit)
 {
   chains[LEFT].side = Side::Left;
   chains[RIGHT].side = Side::Right;
@@ -69,7 +70,9 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
       std::vector<std::string> keywords = own;
       keywords.insert(keywords.end(), {"pressure", "ylo", "yhi", "tolerance", "every",
                                        "frictionless", "vtk"});
-      polyline.read(args, keywords);
+      const long long every = args.integer(1, 1000000000L, USE_POLYLINE);
+      const std::string file = frame_file_name(args, USE_POLYLINE, keywords);
+      check_file_opened(lmp, prefix, "polyline", file, polyline.open(file, every, comm->me == 0));
     } else {
       return false;
     }
@@ -95,7 +98,7 @@ FixMembrane2d::~FixMembrane2d()
 
 std::vector<std::pair<std::string, std::string>> FixMembrane2d::frame_files() const
 {
-  return {{"vtk", vtk.pvd()}, {"polyline", polyline.file()}};
+  return {{"vtk", vtk.pvd()}, {"polyline", polyline.path()}};
 }
 
 /* ---------------------------------------------------------------------- */
@@ -179,12 +182,7 @@ void FixMembrane2d::pre_force(int)
   }
   const bool watch = automatic() && !unwatched && !count_watched_step(run, step, detect);
   if (detect) {
-    run.force_detection = false; // detect_chains() sets it again after widening the band
     detect_chains(watch);
-    run.last_detection = step;
-    run.ylo_detected = lo;
-    run.yhi_detected = hi;
-    build_watch_list(chains, watch, watch_list);
     gather_watched(); // the new chain's positions, speeds and types
     wear_chain_types();
   }
@@ -201,8 +199,8 @@ void FixMembrane2d::detect_chains(bool watch_it)
     gather.bands(platens(), width, active, sides);
     gather.search(finder, sides, pending, platens(), run.tolerance, results);
   };
-  for (const Notice &n : detect(chains, sides, run, d50, automatic(), watch_it ? &watch : nullptr,
-                                update->ntimestep, search))
+  for (const Notice &n : detect(chains, sides, run, watch_list, d50, automatic(),
+                                watch_it ? &watch : nullptr, platens(), update->ntimestep, search))
     n.fatal ? fail(n.text) : warn(n.text);
 }
 
@@ -230,15 +228,22 @@ void FixMembrane2d::post_force(int)
     if (chains[k].active)
       load_side(sides[k].chain_disks, chains[k].side, platens(), pressure, definition.thickness,
                 loads[k]);
-  atoms.add_forces(chains, sides, loads, pressure, definition.thickness);
+  auto owned = [&](AtomId tag) { return gather.owned_index(tag); };
+  add_forces(chains, sides, loads, pressure, definition.thickness, gather.local(), owned, atom->f);
   for (const std::string &w :
        stability_warnings(run, watched.chain_step, watched.chain_step_tag, update->ntimestep,
                           hi - lo, update->dt, d50, density, pressure))
     warn(w);
-  atoms.flags(chains, vector_atom, flag_capacity);
+  if (atom->nmax > flag_capacity) {
+    memory->destroy(vector_atom);
+    flag_capacity = atom->nmax;
+    memory->create(vector_atom, flag_capacity, "membrane2d:flag");
+  }
+  set_flags(chains, atom->nlocal, owned, vector_atom);
   output_vector(chains, loads, run, platens(), pressure, watched.chain_step, vector_values);
   const bigint step = update->ntimestep;
-  polyline.write(step, chains, sides, loads);
+  const std::string why = polyline.due(step) ? polyline.write(step, chains, sides, loads) : "";
+  if (!why.empty()) style_error_one(lmp, prefix, keyword_text("polyline", polyline.path(), why));
   if (vtk.due(step)) vtk.write(step, chains_vtk_frame(chains, sides, loads));
 }
 

@@ -27,11 +27,10 @@ FixStyle(membrane2d,FixMembrane2d)
 #include <utility>
 #include <vector>
 
-#include "membrane_atoms.h"
 #include "membrane_chain.h"
 #include "membrane_fix.h"
-#include "membrane_frames.h"
 #include "membrane_gather.h"
+#include "membrane_polyline.h"
 #include "membrane_state.h"
 
 namespace LAMMPS_NS {
@@ -56,13 +55,12 @@ class FixMembrane2d : public MembraneFix {
   std::vector<std::pair<std::string, std::string>> frame_files() const override;
 
   // the global vector: membrane::Output (membrane_output.h); per-atom flags:
-  // MembraneAtoms::Flag (membrane_atoms.h)
+  // membrane::Flag (membrane_exchange.h)
 
  private:
   membrane::Definition definition; // as given (band -1: default)
-  PolylineFrames polyline;
+  membrane::PolylineFile polyline;
   MembraneGather gather;
-  MembraneAtoms atoms; // forces and flags of the chain disks
   membrane::ChainFinder finder;
 
   // what a detection found, what it depended on, the counters: all a restart carries

@@ -50,8 +50,6 @@ class BandCandidates {
   // delay 0 check yes): between two builds no disk moves more than a skin.
   // Without that bound (these settings) every detection is a full pass.
   static bool motion_bounded(int every, int delay, bool check, bool build_once);
-  bool valid() const { return valid_; }
-  double width() const { return width_; }
   const std::vector<int> &candidates() const { return candidates_; }
 
   // Given the finished slices of this detection (their extents computed from

@@ -1,6 +1,9 @@
 #include "membrane_exchange.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "stability_checks.h"
 
 namespace membrane {
 
@@ -8,6 +11,47 @@ namespace {
 enum BandField { B_SIDE, B_TAG, B_X, B_Y, B_R, BAND_FIELDS };
 enum WatchField { W_ENTRY, W_X, W_Y, W_R, W_STEP, W_TYPE, WATCH_FIELDS };
 } // namespace
+
+void add_forces(const SideChain (&chains)[2], const SideData (&sides)[2],
+                const SideLoad (&loads)[2], double pressure, double thickness,
+                const LocalAtoms &atoms, const LocalIndex &local_index, double *const *f)
+{
+  for (int k = LEFT; k <= RIGHT; k++) {
+    if (!chains[k].active) continue;
+    const std::vector<Disk> &chain = sides[k].chain_disks;
+    for (std::size_t c = 0; c < chain.size(); c++) {
+      const int i = local_index(chain[c].tag);
+      if (i < 0) continue;
+      f[i][0] += loads[k].forces[c].x();
+      f[i][1] += loads[k].forces[c].y();
+    }
+    for (AtomId tag : chains[k].escaped_tags) {
+      const int i = local_index(tag);
+      if (i < 0) continue;
+      const Disk d{tag, atoms.x[i][0], atoms.x[i][1], atoms.radius[i]};
+      const Eigen::Vector2d push = escapee_force(d, chains[k].side, pressure, thickness);
+      f[i][0] += push.x();
+      f[i][1] += push.y();
+    }
+  }
+}
+
+void set_flags(const SideChain (&chains)[2], int nlocal, const LocalIndex &local_index,
+               double *flag)
+{
+  std::fill(flag, flag + nlocal, 0.0);
+  for (int k = LEFT; k <= RIGHT; k++) {
+    if (!chains[k].active) continue;
+    for (AtomId tag : chains[k].chain_tags) {
+      const int i = local_index(tag);
+      if (i >= 0) flag[i] = k == LEFT ? LEFT_CHAIN : RIGHT_CHAIN;
+    }
+    for (AtomId tag : chains[k].escaped_tags) {
+      const int i = local_index(tag);
+      if (i >= 0) flag[i] = ESCAPEE;
+    }
+  }
+}
 
 void reset_slices(SideData (&sides)[2], const bool active[2], Platens platens, double width)
 {
@@ -21,6 +65,48 @@ int add_to_slices(SideData (&sides)[2], const bool active[2], double x, double y
   for (int k = LEFT; k <= RIGHT; k++)
     if (active[k]) sides[k].slices.add_in_slice(slice, x, r);
   return slice;
+}
+
+void add_to_slices(SideData (&sides)[2], const bool active[2], const LocalAtoms &atoms,
+                   const std::vector<int> *indices, std::vector<int> &slice_of)
+{
+  slice_of.resize(static_cast<std::size_t>(atoms.n));
+  const int n = indices ? static_cast<int>(indices->size()) : atoms.n;
+  for (int k = 0; k < n; k++) {
+    const int i = indices ? (*indices)[k] : k;
+    if (atoms.in_group(i))
+      slice_of[i] = add_to_slices(sides, active, atoms.x[i][0], atoms.x[i][1], atoms.radius[i]);
+  }
+}
+
+void put_band_records(std::vector<double> &out, const SideData (&sides)[2], const bool active[2],
+                      const LocalAtoms &atoms, const std::vector<int> *indices,
+                      const std::vector<int> &slice_of, double width)
+{
+  const int n = indices ? static_cast<int>(indices->size()) : atoms.n;
+  for (int k = 0; k < n; k++) {
+    const int i = indices ? (*indices)[k] : k;
+    if (atoms.in_group(i)) put_band_records(out, sides, active, slice_of[i], atoms.disk(i), width);
+  }
+}
+
+std::vector<BandDisk> band_disks(const LocalAtoms &atoms)
+{
+  std::vector<BandDisk> disks;
+  for (int i = 0; i < atoms.n; i++)
+    if (atoms.in_group(i)) disks.push_back({i, atoms.x[i][0], atoms.x[i][1], atoms.radius[i]});
+  return disks;
+}
+
+void y_range(const LocalAtoms &atoms, double &lo, double &hi)
+{
+  lo = 1e300;
+  hi = -1e300;
+  for (int i = 0; i < atoms.n; i++) {
+    if (!atoms.in_group(i)) continue;
+    lo = std::min(lo, atoms.x[i][1]);
+    hi = std::max(hi, atoms.x[i][1]);
+  }
 }
 
 void put_band_records(std::vector<double> &out, const SideData (&sides)[2], const bool active[2],
@@ -46,12 +132,37 @@ void take_bands(const std::vector<double> &records, SideData (&sides)[2])
   }
 }
 
-void put_watched(std::vector<double> &out, std::size_t entry, const Disk &now,
-                 double step_fraction, int type)
+void put_watched(std::vector<double> &out, std::size_t entry, const Disk &now, double step_fraction,
+                 int type)
 {
-  const double rec[WATCH_FIELDS] = {static_cast<double>(entry), now.x, now.y, now.r,
-                                    step_fraction, static_cast<double>(type)};
+  const double rec[WATCH_FIELDS] = {static_cast<double>(entry), now.x, now.y, now.r, step_fraction,
+                                    static_cast<double>(type)};
   out.insert(out.end(), rec, rec + WATCH_FIELDS);
+}
+
+void put_watched(std::vector<double> &out, const std::vector<WatchEntry> &list,
+                 const std::vector<int> &index, const LocalAtoms &atoms, double dt)
+{
+  for (std::size_t k = 0; k < list.size(); k++) {
+    const int i = index[k];
+    if (i < 0) continue;
+    const double *v = atoms.v[i];
+    put_watched(out, k, atoms.disk(i),
+                stability::step_fraction(v[0], v[1], v[2], dt, atoms.radius[i]), atoms.type[i]);
+  }
+}
+
+double largest_displacement(const std::vector<Disk> &band, const std::vector<int> &index,
+                            const LocalAtoms &atoms)
+{
+  double most = 0.0;
+  for (std::size_t b = 0; b < band.size(); b++) {
+    const int i = index[b];
+    if (i < 0) continue;
+    const double dx = atoms.x[i][0] - band[b].x, dy = atoms.x[i][1] - band[b].y;
+    most = std::max(most, dx * dx + dy * dy);
+  }
+  return std::sqrt(most);
 }
 
 void put_band_displacement(std::vector<double> &out, double displacement)

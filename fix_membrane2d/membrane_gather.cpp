@@ -16,7 +16,6 @@
 #include "style_args.h"
 #include "style_error.h"
 #include "membrane_output.h"
-#include "stability_checks.h"
 
 using namespace LAMMPS_NS;
 using membrane::Disk;
@@ -25,11 +24,16 @@ using membrane::RIGHT;
 using membrane::Side;
 using membrane::SideData;
 
-ScopedSeconds::ScopedSeconds(double &total) : total_(total), start_(MPI_Wtime()) {}
-
-ScopedSeconds::~ScopedSeconds()
+membrane::LocalAtoms MembraneGather::local() const
 {
-  total_ += MPI_Wtime() - start_;
+  return {atom->nlocal, atom->mask, groupbit_, atom->tag, atom->x, atom->v, atom->radius,
+          atom->type};
+}
+
+int MembraneGather::owned_index(AtomId tag) const
+{
+  const int i = atom->map(tag);
+  return i < atom->nlocal ? i : -1;
 }
 
 void MembraneGather::allgather(double &bytes)
@@ -45,12 +49,10 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
   // slices are the same.
   const membrane::BandSlices *slices[2] = {active[LEFT] ? &sides[LEFT].slices : nullptr,
                                            active[RIGHT] ? &sides[RIGHT].slices : nullptr};
-  const std::vector<int> &cands = candidates_.candidates();
-  const int nlocal = atom->nlocal;
-  bool from_candidates = candidates_.usable(width, active, neighbor->ncalls, nlocal);
-  auto candidate = [&](int k) { return cands[k]; };
+  const std::vector<int> *cands = &candidates_.candidates();
+  bool from_candidates = candidates_.usable(width, active, neighbor->ncalls, atom->nlocal);
   if (from_candidates) {
-    extents(platens, width, active, sides, static_cast<int>(cands.size()), candidate);
+    extents(platens, width, active, sides, cands);
     // the candidates give the bands of a full pass unless another disk might
     // now be in one (on any rank): then the full pass after all
     int covered = candidates_.still_covers(slices[LEFT], slices[RIGHT]) ? 1 : 0;
@@ -59,19 +61,14 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
     from_candidates = covered != 0;
   }
   if (!from_candidates) {
-    extents(platens, width, active, sides, nlocal, [](int k) { return k; });
+    extents(platens, width, active, sides, nullptr);
     traffic_.full_passes++;
     remember_candidates(width, active, slices);
   }
 
   send_.clear();
-  const int nsend = from_candidates ? static_cast<int>(cands.size()) : nlocal;
-  for (int k = 0; k < nsend; k++) {
-    const int i = from_candidates ? candidate(k) : k;
-    if (!(atom->mask[i] & groupbit_)) continue;
-    const Disk d{atom->tag[i], atom->x[i][0], atom->x[i][1], atom->radius[i]};
-    membrane::put_band_records(send_, sides, active, slice_of_atom_[i], d, width);
-  }
+  membrane::put_band_records(send_, sides, active, local(), from_candidates ? cands : nullptr,
+                             slice_of_atom_, width);
   allgather(traffic_.detection_bytes);
   membrane::take_bands(recv_, sides);
   for (int k = LEFT; k <= RIGHT; k++)
@@ -79,19 +76,12 @@ void MembraneGather::bands(const membrane::Platens &platens, double width, const
       style_error(lmp, prefix_, std::string("no atoms in the ") + membrane::side_name(k) + " band");
 }
 
-// The slices' extents over the n disks local_index(0..n-1), merged over the ranks.
-template <class Index>
+// The slices' extents over the disks `indices` (nullptr: all), merged over the ranks.
 void MembraneGather::extents(const membrane::Platens &platens, double width, const bool active[2],
-                             SideData (&sides)[2], int n, Index local_index)
+                             SideData (&sides)[2], const std::vector<int> *indices)
 {
   membrane::reset_slices(sides, active, platens, width);
-  slice_of_atom_.resize(atom->nlocal);
-  for (int k = 0; k < n; k++) {
-    const int i = local_index(k);
-    if (atom->mask[i] & groupbit_)
-      slice_of_atom_[i] =
-          membrane::add_to_slices(sides, active, atom->x[i][0], atom->x[i][1], atom->radius[i]);
-  }
+  membrane::add_to_slices(sides, active, local(), indices, slice_of_atom_);
   for (int k = LEFT; k <= RIGHT; k++) {
     if (!active[k]) continue;
     std::vector<double> &extent = sides[k].slices.extents();
@@ -109,13 +99,9 @@ void MembraneGather::remember_candidates(double width, const bool active[2],
   if (!membrane::BandCandidates::motion_bounded(neighbor->every, neighbor->delay,
                                                 neighbor->dist_check, neighbor->build_once))
     return;
-  std::vector<membrane::BandDisk> disks;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit_)
-      disks.push_back({i, atom->x[i][0], atom->x[i][1], atom->radius[i]});
   // candidates reach one band width further in than the band
-  candidates_.build(disks, slices[LEFT], slices[RIGHT], width, width, neighbor->skin,
-                    domain->boxlo[1], domain->boxhi[1]);
+  candidates_.build(membrane::band_disks(local()), slices[LEFT], slices[RIGHT], width, width,
+                    neighbor->skin, domain->boxlo[1], domain->boxhi[1]);
   candidates_.stamp(neighbor->ncalls, atom->nlocal, active);
 }
 
@@ -126,7 +112,7 @@ void MembraneGather::search(membrane::ChainFinder &finder, const SideData (&side
   auto owner = [&](int k) { return k == RIGHT && comm->nprocs > 1 ? 1 : 0; };
   const Side side_of[2] = {Side::Left, Side::Right};
   {
-    const ScopedSeconds timing(traffic_.search_seconds);
+    const membrane::ScopedSeconds timing(traffic_.search_seconds);
     for (int k = LEFT; k <= RIGHT; k++)
       if (pending[k] && comm->me == owner(k))
         finder.find(sides[k].band, side_of[k], platens, tolerance, results[k]);
@@ -156,10 +142,7 @@ const std::vector<int> &MembraneGather::owned(membrane::OwnedIndices &cache, std
                                               TagOf tag_of)
 {
   if (cache.stale(neighbor->ncalls, atom->nlocal, n, tag_of))
-    for (std::size_t k = 0; k < n; k++) {
-      const int i = atom->map(tag_of(k));
-      cache.index[k] = i >= 0 && i < atom->nlocal ? i : -1;
-    }
+    for (std::size_t k = 0; k < n; k++) cache.index[k] = owned_index(tag_of(k));
   return cache.index;
 }
 
@@ -167,21 +150,14 @@ membrane::Watched MembraneGather::watched(const std::vector<membrane::WatchEntry
                                           membrane::SideChain (&chains)[2], bool watch_relations,
                                           SideData (&sides)[2])
 {
-  double **x = atom->x;
-  double local_displacement = 0.0;
+  double displacement = 0.0;
   if (watch_relations)
     for (int k = LEFT; k <= RIGHT; k++) {
-      const membrane::SideChain &s = chains[k];
-      if (!s.active || s.watch.always) continue;
-      const std::vector<Disk> &band = s.watch_band;
+      const std::vector<Disk> &band = chains[k].watch_band;
+      if (!chains[k].active || chains[k].watch.always) continue;
       const std::vector<int> &index =
           owned(band_owned_[k], band.size(), [&](std::size_t b) { return band[b].tag; });
-      for (std::size_t b = 0; b < band.size(); b++) {
-        const int i = index[b];
-        if (i < 0) continue;
-        const double dx = x[i][0] - band[b].x, dy = x[i][1] - band[b].y;
-        local_displacement = std::max(local_displacement, dx * dx + dy * dy);
-      }
+      displacement = std::max(displacement, membrane::largest_displacement(band, index, local()));
     }
 
   // each rank sends its owned watched disks (by their place in the list, the
@@ -189,33 +165,17 @@ membrane::Watched MembraneGather::watched(const std::vector<membrane::WatchEntry
   const std::vector<int> &index =
       owned(watched_owned_, list.size(), [&](std::size_t k) { return list[k].tag; });
   send_.clear();
-  for (std::size_t k = 0; k < list.size(); k++) {
-    const int i = index[k];
-    if (i < 0) continue;
-    const double *v = atom->v[i], r = atom->radius[i];
-    membrane::put_watched(send_, k, Disk{list[k].tag, x[i][0], x[i][1], r},
-                          stability::step_fraction(v[0], v[1], v[2], update->dt, r),
-                          atom->type[i]);
-  }
-  membrane::put_band_displacement(send_, std::sqrt(local_displacement));
+  membrane::put_watched(send_, list, index, local(), update->dt);
+  membrane::put_band_displacement(send_, displacement);
   allgather(traffic_.step_bytes);
 
-  const std::string step = std::to_string(update->ntimestep);
   if (!membrane::watched_complete(recv_.size(), list.size(), comm->nprocs))
-    style_error(lmp, prefix_,
-                "a chain, escaped or band disk was lost at step " + step +
-                    " (it left the box, or its position became infinite or NaN under an infinite "
-                    "force; 'thermo_modify lost ignore' hides this): the membrane cannot hold a "
-                    "sample whose outer disks fly off; check the time step, the pressure and the "
-                    "platens");
+    style_error(lmp, prefix_, membrane::lost_disk_error(update->ntimestep));
   if (!std::all_of(recv_.begin(), recv_.end(), [](double v) { return std::isfinite(v); })) {
     // every rank holds recv_: all come here, and find the atom together
     const std::string fault = group_atom_fault(lmp, groupbit_, 2);
     style_error(lmp, prefix_,
-                fault.empty() ? "a chain particle position is not finite at step " + step +
-                                    ": the run has gone unstable; reduce the time step or the "
-                                    "loading rate"
-                              : fault);
+                fault.empty() ? membrane::not_finite_error(update->ntimestep) : fault);
   }
   return membrane::take_watched(recv_, list, chains, sides);
 }
@@ -247,14 +207,10 @@ void MembraneGather::report_traffic(const char *id, bigint step, long long detec
 void MembraneGather::check_enclosed(const ScalarInput &ylo_in, double ylo,
                                     const ScalarInput &yhi_in, double yhi)
 {
-  double local[2] = {1e300, -1e300}, lo, hi;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit_)) continue;
-    local[0] = std::min(local[0], atom->x[i][1]);
-    local[1] = std::max(local[1], atom->x[i][1]);
-  }
-  MPI_Allreduce(&local[0], &lo, 1, MPI_DOUBLE, MPI_MIN, world);
-  MPI_Allreduce(&local[1], &hi, 1, MPI_DOUBLE, MPI_MAX, world);
+  double mine[2], lo, hi;
+  membrane::y_range(local(), mine[0], mine[1]);
+  MPI_Allreduce(&mine[0], &lo, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&mine[1], &hi, 1, MPI_DOUBLE, MPI_MAX, world);
   const std::string below = membrane::enclose_problem(false, ylo, lo);
   if (!below.empty()) style_error(lmp, "", keyword_message(prefix_, "ylo", ylo_in.text(), below));
   const std::string above = membrane::enclose_problem(true, yhi, hi);

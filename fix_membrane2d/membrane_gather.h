@@ -16,19 +16,6 @@
 #include "membrane_exchange.h"
 #include "scalar_input.h"
 
-// Adds the wall-clock time of its scope to `total`.
-class ScopedSeconds {
- public:
-  explicit ScopedSeconds(double &total);
-  ~ScopedSeconds();
-  ScopedSeconds(const ScopedSeconds &) = delete;
-  ScopedSeconds &operator=(const ScopedSeconds &) = delete;
-
- private:
-  double &total_;
-  double start_;
-};
-
 class MembraneGather : protected LAMMPS_NS::Pointers {
  public:
   MembraneGather(LAMMPS_NS::LAMMPS *lammps, std::string prefix, int groupbit)
@@ -66,6 +53,10 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   void report_traffic(const char *id, LAMMPS_NS::bigint step, long long detections);
   double &fix_seconds() { return traffic_.fix_seconds; }
 
+  // This rank's atoms, and the local index of an owned one (-1: not owned).
+  membrane::LocalAtoms local() const;
+  int owned_index(AtomId tag) const;
+
   // The platens enclose every disk centre of the group, else the run stops.
   void check_enclosed(const ScalarInput &ylo_in, double ylo, const ScalarInput &yhi_in,
                       double yhi);
@@ -84,9 +75,8 @@ class MembraneGather : protected LAMMPS_NS::Pointers {
   const std::vector<int> &owned(membrane::OwnedIndices &cache, std::size_t n, TagOf tag_of);
 
   membrane::BandCandidates candidates_;
-  template <class Index>
   void extents(const membrane::Platens &platens, double width, const bool active[2],
-               membrane::SideData (&sides)[2], int n, Index local_index);
+               membrane::SideData (&sides)[2], const std::vector<int> *indices);
   void remember_candidates(double width, const bool active[2],
                            const membrane::BandSlices *const slices[2]);
 };

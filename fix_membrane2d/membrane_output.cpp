@@ -101,6 +101,20 @@ std::string chain_lost_warning(const std::string &where, const std::string &why)
          "): keeping the previous chain; counted in f_ID[12], warned once";
 }
 
+std::string lost_disk_error(long long step)
+{
+  return "a chain, escaped or band disk was lost at step " + std::to_string(step) +
+         " (it left the box, or its position became infinite or NaN under an infinite force; "
+         "'thermo_modify lost ignore' hides this): the membrane cannot hold a sample whose outer "
+         "disks fly off; check the time step, the pressure and the platens";
+}
+
+std::string not_finite_error(long long step)
+{
+  return "a chain particle position is not finite at step " + std::to_string(step) +
+         ": the run has gone unstable; reduce the time step or the loading rate";
+}
+
 std::string restart_unreadable(const std::string &id, const std::string &reason, bool other_format)
 {
   return "the restart file's state of fix " + id + " cannot be read: " + reason +

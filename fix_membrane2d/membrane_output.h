@@ -59,6 +59,9 @@ std::string inertial_warning(const InertialWindow &w, double limit, long long st
 // (`where`: "left side at step N", `why`: the search's reason).
 std::string no_chain_error(const std::string &where, const std::string &why);
 std::string chain_lost_warning(const std::string &where, const std::string &why);
+// A watched disk was lost, or one is not finite, at `step`.
+std::string lost_disk_error(long long step);
+std::string not_finite_error(long long step);
 
 // Why fix `id` cannot use the state of a restart file: its record cannot be
 // read (`reason`; `other_format`: written by another version), or the fix is

@@ -12,8 +12,11 @@ PolylineFile::~PolylineFile()
   if (out_) std::fclose(out_);
 }
 
-std::string PolylineFile::open(const std::string &path)
+std::string PolylineFile::open(const std::string &path, long long every, bool writer)
 {
+  path_ = path;
+  every_ = every;
+  if (!writer) return "";
   if (out_) std::fclose(out_);
   out_ = std::fopen(path.c_str(), "w");
   frames_.clear();

@@ -17,9 +17,11 @@ bool detection_due(const RunState &run, const SharedKeywords &shared, long long 
 }
 
 std::vector<Notice> detect(SideChain (&chains)[2], const SideData (&sides)[2], RunState &run,
-                           double d50, bool automatic, const WatchSettings *watch,
-                           long long step, const BandSearch &search)
+                           std::vector<WatchEntry> &watch_list, double d50, bool automatic,
+                           const WatchSettings *watch, Platens platens, long long step,
+                           const BandSearch &search)
 {
+  run.force_detection = false; // set again below after widening the band
   run.counters.detections++;
   bool pending[2] = {chains[LEFT].active, chains[RIGHT].active};
   double width = run.search_width;
@@ -38,8 +40,8 @@ std::vector<Notice> detect(SideChain (&chains)[2], const SideData (&sides)[2], R
         if (attempt < MAX_WIDENINGS) continue;
         run.counters.failures++;
         s.watch.always = true; // search again at the next step
-        const std::string where = std::string(side_name(k)) + " side at step " +
-                                  std::to_string(step);
+        const std::string where =
+            std::string(side_name(k)) + " side at step " + std::to_string(step);
         if (s.chain_tags.empty())
           notices.push_back({true, no_chain_error(where, results[k].failure)});
         else if (!s.warned_lost) {
@@ -58,6 +60,10 @@ std::vector<Notice> detect(SideChain (&chains)[2], const SideData (&sides)[2], R
     run.search_width = width;
     run.force_detection = true;
   }
+  run.last_detection = step;
+  run.ylo_detected = platens.lo;
+  run.yhi_detected = platens.hi;
+  build_watch_list(chains, watch != nullptr, watch_list);
   return notices;
 }
 

@@ -31,8 +31,8 @@ struct Notice {
 
 // Gathers the bands of `width` into sides[k].band and searches the `pending`
 // sides into results[k].
-using BandSearch = std::function<void(double width, const bool (&pending)[2],
-                                      ChainResult (&results)[2])>;
+using BandSearch =
+    std::function<void(double width, const bool (&pending)[2], ChainResult (&results)[2])>;
 
 // A detection at `step`: the active sides are searched in bands of
 // run.search_width; a side whose search fails is searched again in a band
@@ -45,9 +45,12 @@ using BandSearch = std::function<void(double width, const bool (&pending)[2],
 // every auto forgets it. A side still without a chain keeps its previous one,
 // counted, and is searched again at the next step: the returned notices (side
 // order) are the error when it has none, else the warning, once per side.
+// The detection's step and platens are kept in `run`, and `watch_list` lists
+// the disks to gather from now on (build_watch_list).
 std::vector<Notice> detect(SideChain (&chains)[2], const SideData (&sides)[2], RunState &run,
-                           double d50, bool automatic, const WatchSettings *watch,
-                           long long step, const BandSearch &search);
+                           std::vector<WatchEntry> &watch_list, double d50, bool automatic,
+                           const WatchSettings *watch, Platens platens, long long step,
+                           const BandSearch &search);
 
 // The stability guards at `step` (warned once per run each): the chain
 // disks' step (`chain_step` of disk `tag`, bench/stability_sweep.md) and the

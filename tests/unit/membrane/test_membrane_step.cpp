@@ -10,12 +10,14 @@ using namespace membrane;
 
 namespace {
 
-// five disks of radius 0.5 in a column from y = 0.5, touching; tags 10..14
+// the band the fake search returns: tags 10..14, only their tags matter
 std::vector<Disk> column()
 {
-  std::vector<Disk> d;
-  for (int k = 0; k < 5; k++) d.push_back({10 + k, 0.0, 0.5 + k, 0.5});
-  return d;
+  return {{10, 0.0, 0.5, 0.5},
+          {11, 0.0, 1.5, 0.5},
+          {12, 0.0, 2.5, 0.5},
+          {13, 0.0, 3.5, 0.5},
+          {14, 1.0, 3.5, 0.5}};
 }
 
 // A run after a detection at step 10 with the platens at 0 and 10, the
@@ -52,100 +54,103 @@ TEST(MembraneStep, EveryNDetectsAfterNStepsOrWhenAPlatenMoved)
   EXPECT_FALSE(detection_due(run, automatic, 1000, Platens{0.0, 10.0}, 1.0));
 }
 
-// The right side only; the search finds the chain 10, 11, 12 (escapee 14) in
-// a band at least `found_from` wide, else fails with "cut".
-struct FakeSearch {
+// The right side only, a band of 1 at first; the search finds the chain 10,
+// 11, 12 (escapee 14) of the disk column in a band at least `found_from`
+// wide, else fails with "cut"; detections at platens 0 and 5.
+struct RightSide {
+  SideChain chains[2];
+  SideData sides[2];
+  RunState run;
+  std::vector<WatchEntry> list;
   double found_from;
   std::vector<double> widths;
-  SideData (&sides)[2];
-  void operator()(double width, const bool (&pending)[2], ChainResult (&results)[2])
+
+  explicit RightSide(double found) : found_from(found)
   {
-    widths.push_back(width);
-    EXPECT_FALSE(pending[LEFT]);
-    EXPECT_TRUE(pending[RIGHT]);
-    sides[RIGHT].band = column();
-    ChainResult &r = results[RIGHT];
-    r = ChainResult();
-    r.ok = width >= found_from;
-    if (r.ok) {
-      r.chain = {0, 1, 2};
-      r.escaped = {4};
-    } else {
-      r.failure = "cut";
-    }
+    chains[RIGHT].active = true;
+    run.search_width = 1.0;
+    run.force_detection = false;
+  }
+  std::vector<Notice> detect_at(long long step)
+  {
+    auto search = [this](double width, const bool(&pending)[2], ChainResult(&results)[2]) {
+      widths.push_back(width);
+      EXPECT_FALSE(pending[LEFT]);
+      EXPECT_TRUE(pending[RIGHT]);
+      sides[RIGHT].band = column();
+      ChainResult &r = results[RIGHT];
+      r = ChainResult();
+      r.ok = width >= found_from;
+      if (r.ok) {
+        r.chain = {0, 1, 2};
+        r.escaped = {4};
+      } else {
+        r.failure = "cut";
+      }
+    };
+    return detect(chains, sides, run, list, 1.0, true, nullptr, Platens{0.0, 5.0}, step, search);
   }
 };
 
 TEST(MembraneStep, ADetectionFindsTheChainInTheBandItHas)
 {
-  SideChain chains[2];
-  chains[RIGHT].active = true;
-  SideData sides[2];
-  RunState run;
-  run.search_width = 1.0;
-  run.force_detection = false;
-  FakeSearch search{1.0, {}, sides};
-  const auto notices = detect(chains, sides, run, 1.0, true, nullptr, 7, std::ref(search));
-  EXPECT_TRUE(notices.empty());
-  EXPECT_EQ(search.widths, (std::vector<double>{1.0}));
-  EXPECT_EQ(chains[RIGHT].chain_tags, (std::vector<AtomId>{10, 11, 12}));
-  EXPECT_EQ(chains[RIGHT].escaped_tags, (std::vector<AtomId>{14}));
-  EXPECT_EQ(run.counters.detections, 1);
-  EXPECT_EQ(run.counters.changes, 1);
-  EXPECT_EQ(run.counters.widenings, 0);
-  EXPECT_EQ(run.search_width, 1.0);
-  EXPECT_FALSE(run.force_detection);
+  RightSide s(1.0);
+  EXPECT_TRUE(s.detect_at(7).empty());
+  EXPECT_EQ(s.widths, (std::vector<double>{1.0}));
+  EXPECT_EQ(s.chains[RIGHT].chain_tags, (std::vector<AtomId>{10, 11, 12}));
+  EXPECT_EQ(s.chains[RIGHT].escaped_tags, (std::vector<AtomId>{14}));
+  EXPECT_EQ(s.run.counters.detections, 1);
+  EXPECT_EQ(s.run.counters.changes, 1);
+  EXPECT_EQ(s.run.counters.widenings, 0);
+  EXPECT_EQ(s.run.search_width, 1.0);
+  EXPECT_FALSE(s.run.force_detection);
+  EXPECT_EQ(s.run.last_detection, 7);
+  EXPECT_EQ(s.run.ylo_detected, 0.0);
+  EXPECT_EQ(s.run.yhi_detected, 5.0);
+  // gathered from now on: the chain disks and the escapee
+  std::vector<AtomId> listed;
+  for (const WatchEntry &e : s.list) listed.push_back(e.tag);
+  EXPECT_EQ(listed, (std::vector<AtomId>{10, 11, 12, 14}));
 }
 
 // Found in the band widened once (1 x 2.5): the width is kept and both sides
 // are searched again with it at the next step.
 TEST(MembraneStep, AWidenedBandIsKept)
 {
-  SideChain chains[2];
-  chains[RIGHT].active = true;
-  SideData sides[2];
-  RunState run;
-  run.search_width = 1.0;
-  run.force_detection = false;
-  FakeSearch search{2.0, {}, sides};
-  EXPECT_TRUE(detect(chains, sides, run, 1.0, true, nullptr, 7, std::ref(search)).empty());
-  EXPECT_EQ(search.widths, (std::vector<double>{1.0, 2.5}));
-  EXPECT_EQ(run.counters.widenings, 1);
-  EXPECT_EQ(run.search_width, 2.5);
-  EXPECT_TRUE(run.force_detection);
-  EXPECT_EQ(chains[RIGHT].chain_tags, (std::vector<AtomId>{10, 11, 12}));
+  RightSide s(2.0);
+  EXPECT_TRUE(s.detect_at(7).empty());
+  EXPECT_EQ(s.widths, (std::vector<double>{1.0, 2.5}));
+  EXPECT_EQ(s.run.counters.widenings, 1);
+  EXPECT_EQ(s.run.search_width, 2.5);
+  EXPECT_TRUE(s.run.force_detection);
+  EXPECT_EQ(s.chains[RIGHT].chain_tags, (std::vector<AtomId>{10, 11, 12}));
 }
 
 // Never found: widened twice (1, 2.5, 6.25); without a chain to keep, the
 // run stops; with one, it is warned about once and searched again.
 TEST(MembraneStep, ALostChainStopsTheRunOrIsKeptAndWarnedOnce)
 {
-  SideChain chains[2];
-  chains[RIGHT].active = true;
-  SideData sides[2];
-  RunState run;
-  run.search_width = 1.0;
-  FakeSearch search{1e6, {}, sides}; // beyond MOST_SEARCH_WIDTH D50: never
-  auto notices = detect(chains, sides, run, 1.0, true, nullptr, 7, std::ref(search));
-  EXPECT_EQ(search.widths, (std::vector<double>{1.0, 2.5, 6.25}));
+  RightSide s(1e6); // beyond MOST_SEARCH_WIDTH D50: never
+  auto notices = s.detect_at(7);
+  EXPECT_EQ(s.widths, (std::vector<double>{1.0, 2.5, 6.25}));
   ASSERT_EQ(notices.size(), 1u);
   EXPECT_TRUE(notices[0].fatal);
   EXPECT_EQ(notices[0].text, no_chain_error("right side at step 7", "cut"));
-  EXPECT_EQ(run.counters.failures, 1);
-  EXPECT_EQ(run.counters.widenings, 2);
-  EXPECT_EQ(run.search_width, 6.25);
+  EXPECT_EQ(s.run.counters.failures, 1);
+  EXPECT_EQ(s.run.counters.widenings, 2);
+  EXPECT_EQ(s.run.search_width, 6.25);
 
-  chains[RIGHT].chain_tags = {10, 11, 12};
-  chains[RIGHT].watch.always = false;
-  notices = detect(chains, sides, run, 1.0, true, nullptr, 8, std::ref(search));
+  s.chains[RIGHT].chain_tags = {10, 11, 12};
+  s.chains[RIGHT].watch.always = false;
+  notices = s.detect_at(8);
   ASSERT_EQ(notices.size(), 1u);
   EXPECT_FALSE(notices[0].fatal);
   EXPECT_EQ(notices[0].text, chain_lost_warning("right side at step 8", "cut"));
-  EXPECT_TRUE(chains[RIGHT].watch.always); // searched again at the next step
-  EXPECT_EQ(chains[RIGHT].chain_tags, (std::vector<AtomId>{10, 11, 12}));
-  EXPECT_TRUE(detect(chains, sides, run, 1.0, true, nullptr, 9, std::ref(search)).empty());
-  EXPECT_EQ(run.counters.failures, 3);
-  EXPECT_EQ(run.counters.detections, 3);
+  EXPECT_TRUE(s.chains[RIGHT].watch.always); // searched again at the next step
+  EXPECT_EQ(s.chains[RIGHT].chain_tags, (std::vector<AtomId>{10, 11, 12}));
+  EXPECT_TRUE(s.detect_at(9).empty());
+  EXPECT_EQ(s.run.counters.failures, 3);
+  EXPECT_EQ(s.run.counters.detections, 3);
 }
 
 TEST(MembraneStep, TheChainStepIsWarnedOnce)
