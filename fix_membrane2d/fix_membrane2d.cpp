@@ -9,17 +9,18 @@
 #include "fix_membrane2d.h"
 
 #include <algorithm>
-#include <map>
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "memory.h"
 #include "update.h"
 
 #include "contact_scales.h"
-#include "membrane2d_checks.h"
 #include "membrane_output.h"
 #include "membrane_record.h"
+#include "membrane_step.h"
+#include "membrane_vtk.h"
 #include "restart_envelope.h"
 #include "stability_checks.h"
 #include "style_args.h"
@@ -43,14 +44,14 @@ const char *const USE_SIDES = "sides left|right|both";
 const std::string USE_BAND =
     "band W: the width of the side bands (length), default " + number_text(DEFAULT_BAND) + " x D50";
 const char *const USE_THICKNESS = "thickness T: the out-of-plane thickness (length), default 1";
+const char *const USE_POLYLINE = "polyline N FILE: write the chains every N >= 1 steps to FILE";
 
 } // namespace
 
 /* ---------------------------------------------------------------------- */
 
 FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
-  : MembraneFix(lammps, narg, arg, TRAITS), polyline(lammps, prefix),
-    gather(lammps, prefix, groupbit), atoms(lammps)
+  : MembraneFix(lammps, narg, arg, TRAITS), gather(lammps, prefix, groupbit)
 {
   chains[LEFT].side = Side::Left;
   chains[RIGHT].side = Side::Right;
@@ -69,7 +70,9 @@ FixMembrane2d::FixMembrane2d(LAMMPS *lammps, int narg, char **arg)
       std::vector<std::string> keywords = own;
       keywords.insert(keywords.end(), {"pressure", "ylo", "yhi", "tolerance", "every",
                                        "frictionless", "vtk"});
-      polyline.read(args, keywords);
+      const long long every = args.integer(1, 1000000000L, USE_POLYLINE);
+      const std::string file = frame_file_name(args, USE_POLYLINE, keywords);
+      check_file_opened(lmp, prefix, "polyline", file, polyline.open(file, every, comm->me == 0));
     } else {
       return false;
     }
@@ -95,7 +98,7 @@ FixMembrane2d::~FixMembrane2d()
 
 std::vector<std::pair<std::string, std::string>> FixMembrane2d::frame_files() const
 {
-  return {{"vtk", vtk.pvd()}, {"polyline", polyline.file()}};
+  return {{"vtk", vtk.pvd()}, {"polyline", polyline.path()}};
 }
 
 /* ---------------------------------------------------------------------- */
@@ -104,7 +107,8 @@ void FixMembrane2d::init()
 {
   init_shared();
   set_lengths(definition, d50, tolerance, run);
-  check_band(lmp, prefix, run.band_width, d50);
+  const std::string band = band_problem(run.band_width, d50);
+  if (!band.empty()) fail(keyword_text("band", number_text(run.band_width), band));
   // chain disks are pushed by the membrane on top of their contacts: an
   // unstable chain shows first as escapes
   check_time_step(lmp, groupbit, world, prefix, stability::TIME_STEP_POORLY_RESOLVED, warned_dt);
@@ -113,7 +117,7 @@ void FixMembrane2d::init()
 void FixMembrane2d::setup_pre_force(int vflag)
 {
   evaluate_inputs();
-  check_platens_enclose(lmp, prefix, gather, inputs.lo, lo, inputs.hi, hi);
+  gather.check_enclosed(inputs.lo, lo, inputs.hi, hi);
   gather.start_traffic(update->ntimestep, run.counters.detections);
   // the chains of the last run (or the restart file) still hold when no disk
   // of the group was created, deleted, renumbered, retyped or moved since
@@ -139,7 +143,7 @@ void FixMembrane2d::forget_state()
 {
   types.restore();
   for (SideChain &s : chains) forget_chain(s);
-  for (MembraneSideData &s : sides) s.chain_disks.clear();
+  for (SideData &s : sides) s.chain_disks.clear();
   watch_list.clear();
   run.force_detection = true;
 }
@@ -167,7 +171,7 @@ void FixMembrane2d::pre_force(int)
   evaluate_inputs();
   const bigint step = update->ntimestep;
   const bool unwatched = automatic() && unwatched_step(run, step);
-  bool detect = on_any_rank(detection_due());
+  bool detect = on_any_rank(detection_due(run, shared, step, platens(), d50));
   if (!detect) {
     gather_watched();
     // from what every rank gathered: the same on every rank
@@ -178,12 +182,7 @@ void FixMembrane2d::pre_force(int)
   }
   const bool watch = automatic() && !unwatched && !count_watched_step(run, step, detect);
   if (detect) {
-    run.force_detection = false; // detect_chains() sets it again after widening the band
     detect_chains(watch);
-    run.last_detection = step;
-    run.ylo_detected = lo;
-    run.yhi_detected = hi;
-    build_watch_list(chains, watch, watch_list);
     gather_watched(); // the new chain's positions, speeds and types
     wear_chain_types();
   }
@@ -191,68 +190,18 @@ void FixMembrane2d::pre_force(int)
   if (!types.applied()) wear_chain_types();
 }
 
-// This rank's view of the schedule (on_any_rank makes it every rank's): a forced
-// detection, the schedule of the shared keyword every, a dense every-auto window,
-// with every N platens moved beyond the tolerance.
-bool FixMembrane2d::detection_due()
-{
-  const bigint step = update->ntimestep;
-  return run.force_detection || detection_scheduled(shared, step, run.last_detection) ||
-         (automatic() && unwatched_step(run, step)) ||
-         (!automatic() && platens_moved(run, platens(), platen_move_limit(run, d50)));
-}
-
-// A band narrower than the sample's surface roughness can cut every contact
-// path to the top (seen at 8 % axial strain with 4 D50 where 10 D50 found the
-// chain): before declaring the chain lost, widen the band and search again.
-// The width reached is kept for the rest of the run (a rough outline stays
-// rough), and both sides are searched again with it at the next step, so
-// every auto and every 1 search the same bands.
+// a side whose chain is lost is searched again at the next step (membrane_step.h)
 void FixMembrane2d::detect_chains(bool watch_it)
 {
-  run.counters.detections++;
-  bool pending[2] = {chains[LEFT].active, chains[RIGHT].active};
   const bool active[2] = {chains[LEFT].active, chains[RIGHT].active};
   const WatchSettings watch{platens(), run.tolerance, WATCH_BUDGET * d50};
-  double width = run.search_width;
-  ChainResult results[2];
-  for (int attempt = 0; attempt <= MAX_WIDENINGS && (pending[LEFT] || pending[RIGHT]); attempt++) {
-    if (attempt > 0) {
-      width = widened_band(width, d50);
-      run.counters.widenings++;
-    }
+  auto search = [&](double width, const bool (&pending)[2], ChainResult (&results)[2]) {
     gather.bands(platens(), width, active, sides);
     gather.search(finder, sides, pending, platens(), run.tolerance, results);
-    for (int k = LEFT; k <= RIGHT; k++) {
-      if (!pending[k]) continue;
-      if (!results[k].ok) {
-        if (attempt == MAX_WIDENINGS) chain_lost(k, results[k].failure);
-        continue;
-      }
-      pending[k] = false;
-      SideChain &s = chains[k];
-      // how often a detection changes anything: what skipping detections would risk
-      if (accept_chain(s, sides[k].band, results[k], watch_it ? &watch : nullptr))
-        run.counters.changes++;
-      if (automatic() && !watch_it) drop_watch(s);
-    }
-  }
-  if (width > run.search_width) {
-    run.search_width = width;
-    run.force_detection = true;
-  }
-}
-
-void FixMembrane2d::chain_lost(int k, const std::string &why)
-{
-  SideChain &s = chains[k];
-  run.counters.failures++;
-  s.watch.always = true; // search again at the next step
-  const std::string where =
-      std::string(side_name(k)) + " side at step " + std::to_string(update->ntimestep);
-  if (s.chain_tags.empty()) fail(no_chain_error(where, why));
-  if (!s.warned_lost) warn(chain_lost_warning(where, why));
-  s.warned_lost = true;
+  };
+  for (const Notice &n : detect(chains, sides, run, watch_list, d50, automatic(),
+                                watch_it ? &watch : nullptr, platens(), update->ntimestep, search))
+    n.fatal ? fail(n.text) : warn(n.text);
 }
 
 void FixMembrane2d::gather_watched()
@@ -265,16 +214,9 @@ void FixMembrane2d::gather_watched()
 void FixMembrane2d::wear_chain_types()
 {
   if (types.type() <= 0) return;
-  std::map<AtomId, int> on;
-  for (const MembraneSideData &s : sides)
-    for (std::size_t c = 0; c < s.chain_disks.size(); c++)
-      on.emplace(static_cast<AtomId>(s.chain_disks[c].tag), s.chain_types[c]);
   std::vector<AtomId> tags;
   std::vector<int> now;
-  for (const auto &disk : on) {
-    tags.push_back(disk.first);
-    now.push_back(disk.second);
-  }
+  chain_types(sides, tags, now);
   types.wear(tags, now);
 }
 
@@ -286,32 +228,23 @@ void FixMembrane2d::post_force(int)
     if (chains[k].active)
       load_side(sides[k].chain_disks, chains[k].side, platens(), pressure, definition.thickness,
                 loads[k]);
-  atoms.add_forces(chains, sides, loads, pressure, definition.thickness);
-  check_stability();
-  atoms.flags(chains, vector_atom, flag_capacity);
+  auto owned = [&](AtomId tag) { return gather.owned_index(tag); };
+  add_forces(chains, sides, loads, pressure, definition.thickness, gather.local(), owned, atom->f);
+  for (const std::string &w :
+       stability_warnings(run, watched.chain_step, watched.chain_step_tag, update->ntimestep,
+                          hi - lo, update->dt, d50, density, pressure))
+    warn(w);
+  if (atom->nmax > flag_capacity) {
+    memory->destroy(vector_atom);
+    flag_capacity = atom->nmax;
+    memory->create(vector_atom, flag_capacity, "membrane2d:flag");
+  }
+  set_flags(chains, atom->nlocal, owned, vector_atom);
   output_vector(chains, loads, run, platens(), pressure, watched.chain_step, vector_values);
   const bigint step = update->ntimestep;
-  polyline.write(step, chains, sides, loads);
+  const std::string why = polyline.due(step) ? polyline.write(step, chains, sides, loads) : "";
+  if (!why.empty()) style_error_one(lmp, prefix, keyword_text("polyline", polyline.path(), why));
   if (vtk.due(step)) vtk.write(step, chains_vtk_frame(chains, sides, loads));
-}
-
-// the chain disks' step (bench/stability_sweep.md) and the inertial number
-// of the loading: warned once each, the values stay in f_ID[15] and f_ID[16]
-void FixMembrane2d::check_stability()
-{
-  const bigint step = update->ntimestep;
-  if (watched.chain_step > CHAIN_STEP_LIMIT && !run.warned_chain_step) {
-    run.warned_chain_step = true;
-    warn(chain_step_warning(watched.chain_step_tag, watched.chain_step, step));
-  }
-  // p = the membrane pressure, the smaller principal stress: I is an upper bound
-  const double limit = stability::INERTIAL_QUASI_STATIC;
-  if (run.inertial.update(step, hi - lo, update->dt, INERTIAL_WINDOW, d50, density, pressure,
-                          limit) &&
-      !run.warned_inertial) {
-    run.warned_inertial = true;
-    warn(inertial_warning(run.inertial, limit, step, d50, density, pressure));
-  }
 }
 
 // restart: see fix_membrane2d.h and membrane/membrane_fix.h
@@ -341,7 +274,7 @@ void FixMembrane2d::restart(char *raw)
 double FixMembrane2d::memory_usage()
 {
   double bytes = flag_capacity * sizeof(double);
-  for (const MembraneSideData &s : sides)
+  for (const SideData &s : sides)
     bytes += s.band.capacity() * sizeof(Disk) + s.chain_disks.capacity() * sizeof(Disk);
   return bytes + types.memory_usage();
 }

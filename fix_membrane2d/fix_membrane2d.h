@@ -5,8 +5,9 @@
    pressure as one force per disk. See doc/fix_membrane2d.md. What it
    shares with fix membrane3d (keywords, inputs, checks, frictionless
    types, frames, restart envelope) is membrane/membrane_fix.h; the chain
-   geometry is in membrane_chain.h, its state and decisions in
-   membrane_state.h (no LIGGGHTS), the gathers in membrane_gather.h. This
+   geometry is in membrane_chain.h, its state in membrane_state.h, the
+   decisions of a step in membrane_step.h, what the ranks exchange in
+   membrane_exchange.h (no LIGGGHTS), the gathers in membrane_gather.h. This
    class calls them and applies the forces to owned atoms.
 ------------------------------------------------------------------------- */
 
@@ -26,11 +27,10 @@ FixStyle(membrane2d,FixMembrane2d)
 #include <utility>
 #include <vector>
 
-#include "membrane_atoms.h"
 #include "membrane_chain.h"
 #include "membrane_fix.h"
-#include "membrane_frames.h"
 #include "membrane_gather.h"
+#include "membrane_polyline.h"
 #include "membrane_state.h"
 
 namespace LAMMPS_NS {
@@ -55,13 +55,12 @@ class FixMembrane2d : public MembraneFix {
   std::vector<std::pair<std::string, std::string>> frame_files() const override;
 
   // the global vector: membrane::Output (membrane_output.h); per-atom flags:
-  // MembraneAtoms::Flag (membrane_atoms.h)
+  // membrane::Flag (membrane_exchange.h)
 
  private:
   membrane::Definition definition; // as given (band -1: default)
-  PolylineFrames polyline;
+  membrane::PolylineFile polyline;
   MembraneGather gather;
-  MembraneAtoms atoms; // forces and flags of the chain disks
   membrane::ChainFinder finder;
 
   // what a detection found, what it depended on, the counters: all a restart carries
@@ -69,10 +68,10 @@ class FixMembrane2d : public MembraneFix {
   membrane::RunState run;
 
   // what each step works with
-  MembraneSideData sides[2];
+  membrane::SideData sides[2];
   membrane::SideLoad loads[2];
   std::vector<membrane::WatchEntry> watch_list; // the disks gathered at every step
-  MembraneGather::Watched watched;              // and what they did this step
+  membrane::Watched watched;                    // and what they did this step
   double vector_values[membrane::OUTPUT_SIZE];
   double warned_dt = 0.0; // the time step last warned about
 
@@ -86,12 +85,9 @@ class FixMembrane2d : public MembraneFix {
   bool automatic() const { return shared.automatic(); }
   membrane::Platens platens() const { return membrane::Platens{lo, hi}; }
   void forget_state();
-  bool detection_due();
   void detect_chains(bool watch_it); // watch_it: every auto builds the watch of each side
-  void chain_lost(int side, const std::string &why);
   void gather_watched();
   void wear_chain_types();
-  void check_stability();
 };
 
 } // namespace LAMMPS_NS

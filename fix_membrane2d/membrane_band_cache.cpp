@@ -88,4 +88,24 @@ bool BandCandidates::still_covers(const BandSlices *left, const BandSlices *righ
   return true;
 }
 
+void BandCandidates::stamp(long long neighbour_builds, int nlocal, const bool active[2])
+{
+  neighbour_builds_ = neighbour_builds;
+  nlocal_ = nlocal;
+  active_[0] = active[0];
+  active_[1] = active[1];
+}
+
+bool BandCandidates::usable(double width, const bool active[2], long long neighbour_builds,
+                            int nlocal) const
+{
+  return valid_ && width_ == width && neighbour_builds_ == neighbour_builds && nlocal_ == nlocal &&
+         active_[0] == active[0] && active_[1] == active[1];
+}
+
+bool BandCandidates::motion_bounded(int every, int delay, bool check, bool build_once)
+{
+  return every == 1 && delay == 0 && check && !build_once;
+}
+
 } // namespace membrane

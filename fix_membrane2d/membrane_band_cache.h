@@ -38,8 +38,18 @@ class BandCandidates {
   void build(const std::vector<BandDisk> &disks, const BandSlices *left, const BandSlices *right,
              double width, double margin, double motion, double ybox_lo, double ybox_hi);
   void clear() { valid_ = false; }
-  bool valid() const { return valid_; }
-  double width() const { return width_; }
+  // After build: the key of the rank's atoms the candidates index (LIGGGHTS'
+  // neighbour list builds so far, the local atom count) and the active sides.
+  void stamp(long long neighbour_builds, int nlocal, const bool active[2]);
+  // Whether the candidates may serve a detection with bands of `width` on the
+  // `active` sides while the key is this: no atom changed rank or index since.
+  bool usable(double width, const bool active[2], long long neighbour_builds, int nlocal) const;
+  // LIGGGHTS rebuilds its neighbour lists (and only then moves atoms between
+  // ranks or reorders them) before any atom has moved half a skin from where
+  // it was at the last build when it checks every step (neigh_modify every 1
+  // delay 0 check yes): between two builds no disk moves more than a skin.
+  // Without that bound (these settings) every detection is a full pass.
+  static bool motion_bounded(int every, int delay, bool check, bool build_once);
   const std::vector<int> &candidates() const { return candidates_; }
 
   // Given the finished slices of this detection (their extents computed from
@@ -51,6 +61,9 @@ class BandCandidates {
 
  private:
   bool valid_ = false;
+  long long neighbour_builds_ = -1;
+  int nlocal_ = -1;
+  bool active_[2] = {false, false};
   double width_ = 0.0, motion_ = 0.0;
   double ylo_ = 0.0, strip_ = 1.0;
   std::vector<int> candidates_;

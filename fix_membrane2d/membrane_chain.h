@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "atom_id.h"
 #include "platens.h"
 
 namespace membrane {
@@ -20,7 +21,7 @@ namespace membrane {
 enum class Side { Left, Right };
 
 struct Disk {
-  long tag;
+  AtomId tag;
   double x, y, r;
 };
 

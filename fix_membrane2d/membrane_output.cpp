@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "number_text.h"
 #include "stability_checks.h"
 
 namespace membrane {
@@ -28,11 +29,19 @@ std::string band_problem(double band, double d50)
          g(DEFAULT_BAND) + " x D50 = " + g(DEFAULT_BAND * d50) + ")";
 }
 
-std::string chain_step_warning(long tag, double fraction, long long step)
+std::string enclose_problem(bool top, double platen, double centre)
+{
+  if (top ? !(centre > platen) : !(centre < platen)) return "";
+  return "is " + number_text(platen) + (top ? ", below the highest" : ", above the lowest") +
+         " disk centre of the group (y = " + number_text(centre) +
+         "); the platens must enclose the sample";
+}
+
+std::string chain_step_warning(AtomId tag, double fraction, long long step)
 {
   char buf[512];
   std::snprintf(buf, sizeof(buf),
-                "chain disk %ld moved %.3g of its radius in one step at step %lld (limit %g; "
+                "chain disk %d moved %.3g of its radius in one step at step %lld (limit %g; "
                 "quasi-static chains move < %g): its speed jumped. Ramp the pressure instead of "
                 "jumping it, or reduce the time step or the loading rate (warned once; f_ID[15] "
                 "is the current value)",
@@ -92,6 +101,20 @@ std::string chain_lost_warning(const std::string &where, const std::string &why)
          "): keeping the previous chain; counted in f_ID[12], warned once";
 }
 
+std::string lost_disk_error(long long step)
+{
+  return "a chain, escaped or band disk was lost at step " + std::to_string(step) +
+         " (it left the box, or its position became infinite or NaN under an infinite force; "
+         "'thermo_modify lost ignore' hides this): the membrane cannot hold a sample whose outer "
+         "disks fly off; check the time step, the pressure and the platens";
+}
+
+std::string not_finite_error(long long step)
+{
+  return "a chain particle position is not finite at step " + std::to_string(step) +
+         ": the run has gone unstable; reduce the time step or the loading rate";
+}
+
 std::string restart_unreadable(const std::string &id, const std::string &reason, bool other_format)
 {
   return "the restart file's state of fix " + id + " cannot be read: " + reason +
@@ -142,7 +165,7 @@ void write_polyline_side(std::FILE *fp, const char *side, const Polyline &polyli
   std::fprintf(fp, "ITEM: CHAIN %s %zu (tag x y r fx fy)\n", side, chain.size());
   for (std::size_t c = 0; c < chain.size(); c++) {
     const Disk &d = chain[c];
-    std::fprintf(fp, "%ld %.10g %.10g %.10g %.10g %.10g\n", d.tag, d.x, d.y, d.r, forces[c].x(),
+    std::fprintf(fp, "%d %.10g %.10g %.10g %.10g %.10g\n", d.tag, d.x, d.y, d.r, forces[c].x(),
                  forces[c].y());
   }
 }

@@ -46,9 +46,12 @@ inline const char *side_name(int k)
 // Why the band width or the gap tolerance (lengths) cannot be used with this
 // D50; "" when they can.
 std::string band_problem(double band, double d50);
+// Why the bottom (`top` false) or top platen at `platen` does not enclose the
+// group, whose lowest or highest disk centre is at `centre`; "" when it does.
+std::string enclose_problem(bool top, double platen, double centre);
 
 // The warnings of the stability guards (warned once per run).
-std::string chain_step_warning(long tag, double fraction, long long step);
+std::string chain_step_warning(AtomId tag, double fraction, long long step);
 std::string inertial_warning(const InertialWindow &w, double limit, long long step, double d50,
                              double density, double pressure);
 
@@ -56,6 +59,9 @@ std::string inertial_warning(const InertialWindow &w, double limit, long long st
 // (`where`: "left side at step N", `why`: the search's reason).
 std::string no_chain_error(const std::string &where, const std::string &why);
 std::string chain_lost_warning(const std::string &where, const std::string &why);
+// A watched disk was lost, or one is not finite, at `step`.
+std::string lost_disk_error(long long step);
+std::string not_finite_error(long long step);
 
 // Why fix `id` cannot use the state of a restart file: its record cannot be
 // read (`reason`; `other_format`: written by another version), or the fix is

@@ -118,10 +118,10 @@ std::string read_record(const double *data, std::size_t n, const Definition &def
   return in.error();
 }
 
-void put_tags(RestartRecordWriter &out, const std::vector<long> &tags)
+void put_tags(RestartRecordWriter &out, const std::vector<AtomId> &tags)
 {
   out.put(static_cast<double>(tags.size()));
-  for (long t : tags) out.put(static_cast<double>(t));
+  for (AtomId t : tags) out.put(static_cast<double>(t));
 }
 
 void put_disks(RestartRecordWriter &out, const std::vector<Disk> &disks)
@@ -161,17 +161,17 @@ void put_watch(RestartRecordWriter &out, const DetectionWatch &w)
   for (int i : w.disks) out.put(i);
 }
 
-void get_tags(RestartRecordReader &in, std::vector<long> &out)
+void get_tags(RestartRecordReader &in, std::vector<AtomId> &out)
 {
   out.resize(in.count(1));
-  for (long &t : out) t = static_cast<long>(in.get());
+  for (AtomId &t : out) t = static_cast<AtomId>(in.get());
 }
 
 void get_disks(RestartRecordReader &in, std::vector<Disk> &out)
 {
   out.resize(in.count(4));
   for (Disk &d : out) {
-    d.tag = static_cast<long>(in.get());
+    d.tag = static_cast<AtomId>(in.get());
     d.x = in.get();
     d.y = in.get();
     d.r = in.get();

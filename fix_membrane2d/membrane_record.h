@@ -39,10 +39,10 @@ std::string read_record(const double *data, std::size_t n, const Definition &def
                         bool &same_definition, RunState &run, SideChain (&sides)[2]);
 
 // Its fields.
-void put_tags(RestartRecordWriter &out, const std::vector<long> &tags);
+void put_tags(RestartRecordWriter &out, const std::vector<AtomId> &tags);
 void put_disks(RestartRecordWriter &out, const std::vector<Disk> &disks);
 void put_watch(RestartRecordWriter &out, const DetectionWatch &w);
-void get_tags(RestartRecordReader &in, std::vector<long> &out);
+void get_tags(RestartRecordReader &in, std::vector<AtomId> &out);
 void get_disks(RestartRecordReader &in, std::vector<Disk> &out);
 void get_watch(RestartRecordReader &in, DetectionWatch &out);
 

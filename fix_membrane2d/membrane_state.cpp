@@ -23,7 +23,7 @@ bool accept_chain(SideChain &s, const std::vector<Disk> &band, const ChainResult
                   const WatchSettings *watch)
 {
   const bool forgotten = s.chain_tags.empty();
-  std::vector<long> old_tags, old_escaped;
+  std::vector<AtomId> old_tags, old_escaped;
   old_tags.swap(forgotten ? s.forgotten_tags : s.chain_tags);
   old_escaped.swap(forgotten ? s.forgotten_escaped : s.escaped_tags);
   s.forgotten_tags.clear();
@@ -106,6 +106,20 @@ void set_lengths(const Definition &def, double d50, double tolerance, RunState &
   run.tolerance = tolerance;
 }
 
+void chain_types(const SideData (&sides)[2], std::vector<AtomId> &tags, std::vector<int> &types)
+{
+  std::map<AtomId, int> on;
+  for (const SideData &s : sides)
+    for (std::size_t c = 0; c < s.chain_disks.size(); c++)
+      on.emplace(s.chain_disks[c].tag, s.chain_types[c]);
+  tags.clear();
+  types.clear();
+  for (const auto &disk : on) {
+    tags.push_back(disk.first);
+    types.push_back(disk.second);
+  }
+}
+
 void build_watch_list(const SideChain (&sides)[2], bool watch_relations,
                       std::vector<WatchEntry> &out)
 {
@@ -119,7 +133,7 @@ void build_watch_list(const SideChain (&sides)[2], bool watch_relations,
       e.chain_position[k] = static_cast<int>(c);
       out.push_back(e);
     }
-    for (long tag : s.escaped_tags) {
+    for (AtomId tag : s.escaped_tags) {
       WatchEntry e; // no role: gathered only so that its loss is seen
       e.tag = tag;
       out.push_back(e);

@@ -44,17 +44,30 @@ constexpr long long INERTIAL_WINDOW = 1000; // steps over which the strain rate 
 struct SideChain {
   Side side = Side::Right;
   bool active = false;
-  std::vector<long> chain_tags; // bottom -> top
-  std::vector<long> escaped_tags; // ascending (a set: the band's order is the ranks')
+  std::vector<AtomId> chain_tags; // bottom -> top
+  std::vector<AtomId> escaped_tags; // ascending (a set: the band's order is the ranks')
   std::vector<double> escaped_radius;
   // the chain of the last run when it could not be kept: only to count
   // whether the next detection changes it
-  std::vector<long> forgotten_tags, forgotten_escaped;
+  std::vector<AtomId> forgotten_tags, forgotten_escaped;
   DetectionWatch watch;         // every auto: what the last search depended on
   std::vector<Disk> watch_band; // the band it searched, as it was then
   std::vector<Disk> now;        // the same, its watched disks at their current positions
   bool warned_lost = false;     // "chain lost" was warned
 };
+
+// What one side works with between its detections, gathered on every rank
+// (membrane_exchange.h).
+struct SideData {
+  BandSlices slices;
+  std::vector<Disk> band;        // at the last detection, in no particular order
+  std::vector<Disk> chain_disks; // now, chain order
+  std::vector<int> chain_types;  // their atom types now
+};
+
+// The chain disks of both sides, each once, by ascending ID (`tags`), with
+// their types now (`types`): the particles that wear the frictionless type.
+void chain_types(const SideData (&sides)[2], std::vector<AtomId> &tags, std::vector<int> &types);
 
 // What a search depended on is recorded (every auto) with these.
 struct WatchSettings {
@@ -87,7 +100,7 @@ void set_lengths(const struct Definition &def, double d50, double tolerance, str
 
 // A disk whose position every rank gathers at every step, with its roles.
 struct WatchEntry {
-  long tag = 0;
+  AtomId tag = 0;
   int chain_position[2] = {-1, -1}; // index in sides[k].chain_tags
   int band_index[2] = {-1, -1};     // index in sides[k].watch_band
 };

@@ -60,4 +60,15 @@ std::string vtk_frame(const std::vector<VtkSide> &sides)
   return out;
 }
 
+std::string chains_vtk_frame(const SideChain (&chains)[2], const SideData (&sides)[2],
+                             const SideLoad (&loads)[2])
+{
+  std::vector<VtkSide> shown;
+  for (int k = LEFT; k <= RIGHT; k++)
+    if (chains[k].active)
+      shown.push_back({k == LEFT ? 1 : 2, &loads[k].polyline, &sides[k].chain_disks,
+                       &loads[k].forces});
+  return vtk_frame(shown);
+}
+
 } // namespace membrane

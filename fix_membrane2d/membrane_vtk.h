@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "membrane_chain.h"
+#include "membrane_state.h"
 
 namespace membrane {
 
@@ -28,6 +29,9 @@ struct VtkSide {
 // per disk. Point data: side, tag (-1 on polyline vertices), radius (0 there),
 // force (0 there; z = 0).
 std::string vtk_frame(const std::vector<VtkSide> &sides);
+// The frame of the active sides' chains.
+std::string chains_vtk_frame(const SideChain (&chains)[2], const SideData (&sides)[2],
+                             const SideLoad (&loads)[2]);
 
 } // namespace membrane
 

@@ -40,7 +40,7 @@ TEST(MembraneAlloc, RepeatedFindDoesNotAllocate)
   std::vector<Disk> d;
   for (int row = 0; row < 40; ++row)
     for (int col = 0; col < 12; ++col)
-      d.push_back({row * 12 + col + 1L, col + (row % 2 ? 0.5 : 0.0) + u(rng),
+      d.push_back({row * 12 + col + 1, col + (row % 2 ? 0.5 : 0.0) + u(rng),
                    0.5 + row * h + u(rng), 0.5 * (1.0 + u(rng))});
   d.push_back({10000, 14.0, 10.0, 0.5}); // an escapee, so that list is exercised too
   const Platens pl{0.0, 1.0 + 39 * h};

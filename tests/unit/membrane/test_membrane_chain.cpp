@@ -33,7 +33,7 @@ std::vector<Disk> hex_block(int cols, int rows)
   std::vector<Disk> d;
   for (int row = 0; row < rows; ++row)
     for (int col = 0; col < cols; ++col)
-      d.push_back({row * cols + col + 1L, col + (row % 2 ? 0.5 : 0.0), row_y(row), kR});
+      d.push_back({row * cols + col + 1, col + (row % 2 ? 0.5 : 0.0), row_y(row), kR});
   return d;
 }
 
@@ -42,21 +42,21 @@ Platens platens_for(int rows)
   return {0.0, row_y(rows - 1) + kR};
 }
 
-std::vector<long> tags_of(const std::vector<Disk> &d, const std::vector<int> &idx)
+std::vector<AtomId> tags_of(const std::vector<Disk> &d, const std::vector<int> &idx)
 {
-  std::vector<long> t;
+  std::vector<AtomId> t;
   for (int i : idx) t.push_back(d[i].tag);
   return t;
 }
 
-std::vector<long> sorted_tags_of(const std::vector<Disk> &d, const std::vector<int> &idx)
+std::vector<AtomId> sorted_tags_of(const std::vector<Disk> &d, const std::vector<int> &idx)
 {
-  std::vector<long> t = tags_of(d, idx);
+  std::vector<AtomId> t = tags_of(d, idx);
   std::sort(t.begin(), t.end());
   return t;
 }
 
-int index_of(const std::vector<Disk> &d, long tag)
+int index_of(const std::vector<Disk> &d, AtomId tag)
 {
   for (std::size_t i = 0; i < d.size(); ++i)
     if (d[i].tag == tag) return static_cast<int>(i);
@@ -108,9 +108,9 @@ int check_escapees(const std::vector<Disk> &d, const ChainResult &r, Side side, 
   return outside;
 }
 
-std::vector<long> right_edge_tags(int cols, int rows)
+std::vector<AtomId> right_edge_tags(int cols, int rows)
 {
-  std::vector<long> t;
+  std::vector<AtomId> t;
   for (int row = 0; row < rows; ++row) t.push_back(row * cols + cols);
   return t;
 }
@@ -123,7 +123,7 @@ TEST(MembraneChain, HexBlockRightEdge)
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
-  EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{6, 12, 18, 24, 30, 36, 42, 48, 54, 60}));
+  EXPECT_EQ(tags_of(d, r.chain), (std::vector<AtomId>{6, 12, 18, 24, 30, 36, 42, 48, 54, 60}));
   EXPECT_TRUE(r.escaped.empty());
   EXPECT_EQ(r.pruned, 0);
   EXPECT_EQ(r.failed_starts, 0);
@@ -143,7 +143,7 @@ TEST(MembraneChain, HexBlockLeftEdge)
   ChainFinder cf;
   const ChainResult r = cf.find(d, Side::Left, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
-  EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{1, 7, 13, 19, 25, 31, 37, 43, 49, 55}));
+  EXPECT_EQ(tags_of(d, r.chain), (std::vector<AtomId>{1, 7, 13, 19, 25, 31, 37, 43, 49, 55}));
   EXPECT_TRUE(r.escaped.empty());
   EXPECT_EQ(r.polyline.front(), Vector2d(0.0, 0.0));
   for (const Vector2d &f : membrane::chain_forces(r.polyline, Side::Left, 1e5, 1.0))
@@ -163,7 +163,7 @@ TEST(MembraneChain, BulgeIsFollowed)
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(cf.degree(index_of(d, 100)), 2);
-  EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{6, 12, 18, 24, 30, 100, 36, 42, 48, 54, 60}));
+  EXPECT_EQ(tags_of(d, r.chain), (std::vector<AtomId>{6, 12, 18, 24, 30, 100, 36, 42, 48, 54, 60}));
   EXPECT_TRUE(r.escaped.empty());
   expect_force_balance(r.polyline, Side::Right, 2e5, 0.1);
 }
@@ -191,7 +191,7 @@ TEST(MembraneChain, OverhangGoesDownBeforeUp)
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(tags_of(d, r.chain),
-            (std::vector<long>{6, 12, 18, 24, 30, 36, 101, 102, 120, 103, 112, 111, 48, 54, 60}));
+            (std::vector<AtomId>{6, 12, 18, 24, 30, 36, 101, 102, 120, 103, 112, 111, 48, 54, 60}));
   EXPECT_TRUE(r.escaped.empty()); // 42 at (5, y6) is under the arm, inside
   bool goes_down = false;
   for (std::size_t k = 0; k + 1 < r.polyline.size(); ++k)
@@ -242,7 +242,7 @@ TEST(MembraneChain, GapJustBelowToleranceIsLinked)
   EXPECT_TRUE(cf.linked(x, index_of(d, 24)));
   EXPECT_TRUE(cf.linked(x, index_of(d, 36)));
   EXPECT_FALSE(cf.linked(x, index_of(d, 30)));
-  EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{6, 12, 18, 24, 100, 36, 42, 48, 54, 60}));
+  EXPECT_EQ(tags_of(d, r.chain), (std::vector<AtomId>{6, 12, 18, 24, 100, 36, 42, 48, 54, 60}));
   EXPECT_TRUE(r.escaped.empty()); // 30 is now inside the chain
 }
 
@@ -299,7 +299,7 @@ TEST(MembraneChain, HangingClusterIsPruned)
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(tags_of(d, r.chain), right_edge_tags(6, 10));
   EXPECT_EQ(r.pruned, 3);
-  EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<long>{100, 101, 102}));
+  EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<AtomId>{100, 101, 102}));
 }
 
 TEST(MembraneChain, GapAcrossWholeWidthFails)
@@ -358,7 +358,7 @@ TEST(MembraneChain, DetachedBottomClusterFallsBackToNextCandidate)
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(r.failed_starts, 1); // 100 is skipped as visited by 101's walk
   EXPECT_EQ(tags_of(d, r.chain), right_edge_tags(6, 10));
-  EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<long>{100, 101, 102}));
+  EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<AtomId>{100, 101, 102}));
 }
 
 TEST(MembraneChain, TallSingleDiskChain)
@@ -451,7 +451,7 @@ std::vector<Disk> mirrored_block(int rows, unsigned seed, double amp)
     const int n = odd ? 5 : 6;
     for (int col = 0; col < n; ++col) {
       const double x = col + (odd ? 0.5 : 0.0);
-      const long tag = row * 10 + col + 1;
+      const AtomId tag = row * 10 + col + 1;
       if (x < 2.5) continue;
       const double y = row_y(row) + u(rng), r = kR * (1.0 + u(rng));
       if (x == 2.5) {
@@ -467,7 +467,7 @@ std::vector<Disk> mirrored_block(int rows, unsigned seed, double amp)
   return d;
 }
 
-long mirror_tag(long tag)
+AtomId mirror_tag(AtomId tag)
 {
   return tag > 1000 ? tag - 1000 : tag + 1000;
 }
@@ -534,7 +534,7 @@ TEST(MembraneChain, ShuffledInputGivesSameTags)
     }
   }
   const ChainResult r = cf.find(d, Side::Right, platens_for(10), 1e-6);
-  EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<long>{200, 201, 202}));
+  EXPECT_EQ(sorted_tags_of(d, r.escaped), (std::vector<AtomId>{200, 201, 202}));
   EXPECT_EQ(r.pruned, 1);
 }
 
@@ -547,13 +547,13 @@ TEST(MembraneChain, TieOnStartXTakesLowestTag)
     std::vector<Disk> d = {{3, 1.0, 0.2, 0.2}, {5, 1.0, 1.5, 0.5}, {7, 1.0, 0.5, 0.5}};
     const ChainResult r = cf.find(d, Side::Right, {0.0, 2.0}, 1e-9);
     ASSERT_TRUE(r.ok) << r.failure;
-    EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{3, 7, 5}));
+    EXPECT_EQ(tags_of(d, r.chain), (std::vector<AtomId>{3, 7, 5}));
   }
   {
     std::vector<Disk> d = {{3, 1.0, 0.5, 0.5}, {5, 1.0, 1.5, 0.5}, {7, 1.0, 0.2, 0.2}};
     const ChainResult r = cf.find(d, Side::Right, {0.0, 2.0}, 1e-9);
     ASSERT_TRUE(r.ok) << r.failure;
-    EXPECT_EQ(tags_of(d, r.chain), (std::vector<long>{3, 5}));
+    EXPECT_EQ(tags_of(d, r.chain), (std::vector<AtomId>{3, 5}));
   }
 }
 
@@ -564,7 +564,7 @@ TEST(MembraneChain, LargeLooseSetNeverHangs)
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> ux(0.0, 40.0), uy(0.5, 39.5), ur(0.2, 0.5);
   std::vector<Disk> d;
-  for (long i = 0; i < 1000; ++i) d.push_back({i + 1, ux(rng), uy(rng), ur(rng)});
+  for (AtomId i = 0; i < 1000; ++i) d.push_back({i + 1, ux(rng), uy(rng), ur(rng)});
   d.push_back({5000, 1e9, 20.0, 0.5});
   ChainFinder cf;
   int ok = 0, escaped = 0;

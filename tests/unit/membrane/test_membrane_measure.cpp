@@ -79,7 +79,7 @@ TEST(MembraneMeasure, HexBlockAreaFromChains)
   std::vector<membrane::Disk> d;
   for (int row = 0; row < 10; ++row)
     for (int col = 0; col < 6; ++col)
-      d.push_back({row * 6 + col + 1L, col + (row % 2 ? 0.5 : 0.0), 0.5 + row * h, 0.5});
+      d.push_back({row * 6 + col + 1, col + (row % 2 ? 0.5 : 0.0), 0.5 + row * h, 0.5});
   const Platens pl{0.0, 1.0 + 9 * h};
   membrane::ChainFinder cf;
   const auto l = cf.find(d, Side::Left, pl, 1e-6);

@@ -39,9 +39,9 @@ TEST(MembraneRecord, RoundTripGivesEveryField)
   ASSERT_TRUE(in.ok()) << in.error();
   EXPECT_EQ(in.version(), RECORD_VERSION);
   EXPECT_EQ(in.get(), 42.0);
-  std::vector<long> tags;
+  std::vector<AtomId> tags;
   get_tags(in, tags);
-  EXPECT_EQ(tags, (std::vector<long>{7, 3, 11}));
+  EXPECT_EQ(tags, (std::vector<AtomId>{7, 3, 11}));
   std::vector<Disk> disks;
   get_disks(in, disks);
   ASSERT_EQ(disks.size(), 2u);
@@ -89,7 +89,7 @@ TEST(MembraneRecord, CutRecordIsRefused)
   RestartRecordReader in = record_reader(rec.data(), rec.size());
   ASSERT_TRUE(in.ok());
   in.get();
-  std::vector<long> tags;
+  std::vector<AtomId> tags;
   get_tags(in, tags); // 3 tags announced, 3 fit
   std::vector<Disk> disks;
   get_disks(in, disks);

@@ -31,8 +31,8 @@ TEST(MembraneState, AcceptChainTakesTagsAndCountsChanges)
   r.chain = {0, 1, 2};
   r.escaped = {4};
   EXPECT_TRUE(accept_chain(s, band, r, nullptr)); // from nothing: a change
-  EXPECT_EQ(s.chain_tags, (std::vector<long>{10, 11, 12}));
-  EXPECT_EQ(s.escaped_tags, (std::vector<long>{14}));
+  EXPECT_EQ(s.chain_tags, (std::vector<AtomId>{10, 11, 12}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<AtomId>{14}));
   EXPECT_EQ(s.escaped_radius, (std::vector<double>{0.5}));
   EXPECT_TRUE(s.watch_band.empty());               // no watch asked
   EXPECT_FALSE(accept_chain(s, band, r, nullptr)); // the same chain again
@@ -53,7 +53,7 @@ TEST(MembraneState, EscapeesInAnotherBandOrderAreNoChange)
   r.chain = {0, 1, 2};
   r.escaped = {3, 4}; // tags 13, 14
   EXPECT_TRUE(accept_chain(s, band, r, nullptr));
-  EXPECT_EQ(s.escaped_tags, (std::vector<long>{13, 14}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<AtomId>{13, 14}));
   // rank 1's disks first: tags 14, 13, 10, 11, 12
   const std::vector<Disk> moved = {band[4], band[3], band[0], band[1], band[2]};
   ChainResult q;
@@ -61,15 +61,15 @@ TEST(MembraneState, EscapeesInAnotherBandOrderAreNoChange)
   q.chain = {2, 3, 4};  // tags 10, 11, 12
   q.escaped = {0, 1};   // ascending indices: tags 14, 13
   EXPECT_FALSE(accept_chain(s, moved, q, nullptr));
-  EXPECT_EQ(s.chain_tags, (std::vector<long>{10, 11, 12}));
-  EXPECT_EQ(s.escaped_tags, (std::vector<long>{13, 14}));     // by tag
+  EXPECT_EQ(s.chain_tags, (std::vector<AtomId>{10, 11, 12}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<AtomId>{13, 14}));     // by tag
   EXPECT_EQ(s.escaped_radius, (std::vector<double>{0.25, 0.5})); // each with its disk's
   // and back: still no change
   EXPECT_FALSE(accept_chain(s, band, r, nullptr));
   // a different set is a change whatever the order
   q.escaped = {0};
   EXPECT_TRUE(accept_chain(s, moved, q, nullptr));
-  EXPECT_EQ(s.escaped_tags, (std::vector<long>{14}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<AtomId>{14}));
 }
 
 // A restart file written before the escapees were kept by tag holds them in
@@ -86,7 +86,7 @@ TEST(MembraneState, UnsortedEscapeesFromARestartAreComparedAsASet)
   r.chain = {0, 1, 2};
   r.escaped = {3, 4};
   EXPECT_FALSE(accept_chain(s, band, r, nullptr));
-  EXPECT_EQ(s.escaped_tags, (std::vector<long>{13, 14}));
+  EXPECT_EQ(s.escaped_tags, (std::vector<AtomId>{13, 14}));
 }
 
 TEST(MembraneState, ForgottenChainIsComparedWithTheNextOne)
@@ -100,7 +100,7 @@ TEST(MembraneState, ForgottenChainIsComparedWithTheNextOne)
   forget_chain(s);
   EXPECT_TRUE(s.chain_tags.empty());
   EXPECT_TRUE(s.watch.always);
-  EXPECT_EQ(s.forgotten_tags, (std::vector<long>{10, 11}));
+  EXPECT_EQ(s.forgotten_tags, (std::vector<AtomId>{10, 11}));
   // the same chain found again after a forget is no change
   EXPECT_FALSE(accept_chain(s, band, r, nullptr));
   EXPECT_TRUE(s.forgotten_tags.empty());

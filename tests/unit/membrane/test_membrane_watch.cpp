@@ -24,7 +24,7 @@ std::vector<Disk> hex_block(int cols, int rows)
   std::vector<Disk> d;
   for (int row = 0; row < rows; ++row)
     for (int col = 0; col < cols; ++col)
-      d.push_back({row * cols + col + 1L, col + (row % 2 ? 0.5 : 0.0), 0.5 + row * kH, 0.5});
+      d.push_back({row * cols + col + 1, col + (row % 2 ? 0.5 : 0.0), 0.5 + row * kH, 0.5});
   return d;
 }
 
@@ -33,9 +33,9 @@ Platens platens_for(int rows)
   return {0.0, 0.5 + (rows - 1) * kH + 0.5};
 }
 
-std::vector<long> tags(const std::vector<Disk> &d, const std::vector<int> &idx)
+std::vector<AtomId> tags(const std::vector<Disk> &d, const std::vector<int> &idx)
 {
-  std::vector<long> t;
+  std::vector<AtomId> t;
   for (int i : idx) t.push_back(d[i].tag);
   return t;
 }
