@@ -26,6 +26,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include <cstdio>
 #include <vector>
 
+#include "gathered_spheres.h"
 #include "lateral_surface.h"
 #include "membrane3d_auto.h"
 #include "membrane3d_gather.h"
@@ -68,7 +69,7 @@ class FixMembrane3d : public MembraneFix {
   double memory_usage() override;
 
  private:
-  Membrane3dAuto automatic; // every auto
+  membrane3d::Membrane3dAuto automatic; // every auto
 
   // the last detection: its topology over the member atoms, their IDs, its step
   membrane3d::MembraneTopology topology;
@@ -85,16 +86,17 @@ class FixMembrane3d : public MembraneFix {
   double detections = 0.0;
 
   // this step
-  GatheredSpheres members; // the member atoms now, in member_tags' order
+  membrane3d::GatheredSpheres members; // the member atoms now, in member_tags' order
   membrane3d::Platens platens{0.0, 0.0};
   bool warned_rim = false;
   bool warned_moved = false; // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];
   bool centres_placed = false; // output[VOLUME] is this step's
 
+  Membrane3dGather gather() const; // this step's (membrane3d_gather.h)
   bool detection_due();
   void detect();
-  void wear_types(const GatheredSpheres &g);
+  void wear_types(const membrane3d::GatheredSpheres &g);
   void place_and_apply();
 };
 
