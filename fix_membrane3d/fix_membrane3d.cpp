@@ -88,8 +88,8 @@ void FixMembrane3d::pre_force(int)
   }
   if (!types.applied()) wear_types(members); // a run's start, after a restart write
   if (shared.automatic() || warned_moved) return;
-  const std::string moved = membrane3d::moved_warning(members, detected_at, tolerance,
-                                                      last_detection, update->ntimestep);
+  const std::string moved =
+      membrane3d::moved_warning(members, detected_at, tolerance, last_detection, update->ntimestep);
   if (!moved.empty()) warn(moved);
   warned_moved = !moved.empty();
 }
@@ -112,8 +112,7 @@ bool FixMembrane3d::detection_due()
   if (member_tags.empty() || membrane::detection_scheduled(shared, step, last_detection))
     return true;
   if (shared.automatic() && !decided)
-    return automatic.can_have_changed(gather().for_auto(), platens, tolerance, d50, step,
-                                      members);
+    return automatic.can_have_changed(gather().for_auto(), platens, tolerance, d50, step, members);
   // platens moved beyond the tolerance (their images' links), an atom lost or gone from
   // the group (a restart read by a fix on another group)
   return membrane3d::moved_apart(platens, detected_platens, tolerance) ||

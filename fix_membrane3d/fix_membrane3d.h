@@ -76,7 +76,7 @@ class FixMembrane3d : public MembraneFix {
   std::vector<int> member_tags;
   bigint last_detection = -1;
   membrane3d::Platens detected_platens{0.0, 0.0}; // at the last detection
-  bigint decided_step = -1; // the last step pre_force decided on
+  bigint decided_step = -1;                       // the last step pre_force decided on
   // the group at the end of the last run (or when the restart file was written): a
   // run that starts on another group (delete_atoms renumbers the IDs) finds the
   // membrane anew

@@ -53,8 +53,8 @@ class Membrane3dAuto {
   // This step: whether the membrane found last can have changed; when not, `members`
   // holds the member atoms now. Checks the group's signature against the detection's,
   // then gathers the watched atoms.
-  bool can_have_changed(const Group &group, const Platens &platens, double tolerance,
-                        double d50, long long step, GatheredSpheres &members);
+  bool can_have_changed(const Group &group, const Platens &platens, double tolerance, double d50,
+                        long long step, GatheredSpheres &members);
 
   // restart: the detection's spheres and platens, the schedule
   void save(Membrane3dState &state) const;

@@ -104,9 +104,8 @@ membrane3d::Membrane3dAuto::Group Membrane3dGather::for_auto() const
     s.id_sum = sums[1];
     return s;
   };
-  return {signature, [self](const std::vector<int> &tags, GatheredSpheres &out) {
-            self.tags(tags, out);
-          }};
+  return {signature,
+          [self](const std::vector<int> &tags, GatheredSpheres &out) { self.tags(tags, out); }};
 }
 
 void check_ranks_agree(LAMMPS *lmp, const std::string &prefix, const std::vector<int> &member_tags,

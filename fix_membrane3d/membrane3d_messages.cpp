@@ -10,9 +10,10 @@ namespace membrane3d {
 std::string platens_problem(int tag, double z, const Platens &platens, long long step)
 {
   if (z > platens.lo && z < platens.hi) return "";
-  return "atom " + std::to_string(tag) + " at z = " + number_text(z) + " is not between zlo = " +
-         number_text(platens.lo) + " and zhi = " + number_text(platens.hi) + " at step " +
-         std::to_string(step) + "; the platens must enclose every sphere centre of the group";
+  return "atom " + std::to_string(tag) + " at z = " + number_text(z) +
+         " is not between zlo = " + number_text(platens.lo) +
+         " and zhi = " + number_text(platens.hi) + " at step " + std::to_string(step) +
+         "; the platens must enclose every sphere centre of the group";
 }
 
 std::string too_few_spheres(const std::string &group, std::size_t spheres, long long step)
@@ -49,8 +50,7 @@ std::string closure_problem(const std::vector<Eigen::Vector3d> &load, double pre
            " times the facets' areas overflows; give the confining pressure in the units of "
            "the box (force/area)";
   // a load that is not finite fails the test too (NaN compares false with everything)
-  if (net.head<2>().norm() <= CLOSURE_ROUND_OFF * magnitude && std::isfinite(magnitude))
-    return "";
+  if (net.head<2>().norm() <= CLOSURE_ROUND_OFF * magnitude && std::isfinite(magnitude)) return "";
   return "the membrane's loads have a lateral net force of " + number_text(net.head<2>().norm()) +
          " N (of " + number_text(magnitude) + " N in all) at step " + std::to_string(step) +
          (net.allFinite() ? ": the membrane is not closed" : ": a load is not finite") +

@@ -6,8 +6,8 @@
 namespace membrane3d {
 
 MembraneTopology detect_near_members(const GatheredSpheres &all,
-                                     const std::vector<int> &member_tags,
-                                     const Platens &platens, double tolerance)
+                                     const std::vector<int> &member_tags, const Platens &platens,
+                                     double tolerance)
 {
   std::vector<int> seeds;
   for (int tag : member_tags) {

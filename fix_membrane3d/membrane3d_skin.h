@@ -17,8 +17,8 @@ namespace membrane3d {
 // `member_tags` (ascending; those no longer in `all` are passed over; none: around the
 // outermost spheres).
 MembraneTopology detect_near_members(const GatheredSpheres &all,
-                                     const std::vector<int> &member_tags,
-                                     const Platens &platens, double tolerance);
+                                     const std::vector<int> &member_tags, const Platens &platens,
+                                     double tolerance);
 
 } // namespace membrane3d
 

@@ -143,10 +143,10 @@ TEST(Membrane3dAuto, UnmovedGroupKeepsItsMembrane)
 {
   Detected at(1.0);
   std::vector<int> members;
-  EXPECT_TRUE(same(at.topology, membrane3d::members_only(
-                                    membrane3d::detect_membrane(at.group.group.spheres,
-                                                                kFarPlatens, at.tolerance),
-                                    members)));
+  EXPECT_TRUE(same(at.topology,
+                   membrane3d::members_only(membrane3d::detect_membrane(at.group.group.spheres,
+                                                                        kFarPlatens, at.tolerance),
+                                            members)));
   EXPECT_EQ(members, at.members);
   GatheredSpheres now;
   EXPECT_FALSE(at.changed(1, now));
@@ -201,8 +201,8 @@ TEST(Membrane3dAuto, DenseWindowGoesUnwatched)
       const FakeGroup full{whole};
       auto gathers = at.group.gathers_of();
       gathers.signature = [&full] { return signature_of(full.group); };
-      EXPECT_TRUE(at.automatic.can_have_changed(gathers, kFarPlatens, at.tolerance, at.d, step,
-                                                now));
+      EXPECT_TRUE(
+          at.automatic.can_have_changed(gathers, kFarPlatens, at.tolerance, at.d, step, now));
     } else {
       EXPECT_FALSE(at.changed(step, now)) << step;
     }

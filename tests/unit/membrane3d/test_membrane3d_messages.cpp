@@ -53,13 +53,12 @@ TEST(Membrane3dMessages, ClosedLoadsHaveNoLateralNetForce)
 {
   Vector3d net;
   // (1, 2, 3) + (-1, -2, 1): no lateral part, net (0, 0, 4)
-  EXPECT_EQ(membrane3d::closure_problem({Vector3d(1, 2, 3), Vector3d(-1, -2, 1)}, 1.0, 9, net),
-            "");
+  EXPECT_EQ(membrane3d::closure_problem({Vector3d(1, 2, 3), Vector3d(-1, -2, 1)}, 1.0, 9, net), "");
   EXPECT_EQ(net, Vector3d(0, 0, 4));
   // a lateral round-off of 1e-12 against 2 in all: within 1e-9
-  EXPECT_EQ(membrane3d::closure_problem({Vector3d(1, 0, 0), Vector3d(-1 + 1e-12, 0, 0)}, 1.0, 9,
-                                        net),
-            "");
+  EXPECT_EQ(
+      membrane3d::closure_problem({Vector3d(1, 0, 0), Vector3d(-1 + 1e-12, 0, 0)}, 1.0, 9, net),
+      "");
   // (3, 0, 0) + (0, 4, 0): lateral 5 of 3 + 4 = 7
   EXPECT_EQ(membrane3d::closure_problem({Vector3d(3, 0, 0), Vector3d(0, 4, 0)}, 1.0, 9, net),
             "the membrane's loads have a lateral net force of 5 N (of 7 N in all) at step 9: "
@@ -73,8 +72,8 @@ TEST(Membrane3dMessages, LoadsThatAreNotFinite)
   const double inf = std::numeric_limits<double>::infinity();
   Vector3d net;
   // a finite pressure whose loads overflow: the input's fault
-  EXPECT_EQ(membrane3d::closure_problem({Vector3d(1e308, 0, 0), Vector3d(-1e308, 0, 1e308)},
-                                        1e300, 2, net),
+  EXPECT_EQ(membrane3d::closure_problem({Vector3d(1e308, 0, 0), Vector3d(-1e308, 0, 1e308)}, 1e300,
+                                        2, net),
             "the membrane's loads at step 2 are not finite: the pressure 1e+300 times the "
             "facets' areas overflows; give the confining pressure in the units of the box "
             "(force/area)");
@@ -89,8 +88,8 @@ TEST(Membrane3dMessages, FarthestMovedMember)
 {
   GatheredSpheres now;
   now.tags = {5, 6, 7};
-  now.spheres = {{Vector3d(0, 0.3, 0), 0.5}, {Vector3d(1.3, 0.4, 0), 0.5},
-                 {Vector3d(2, 0, 0.2), 0.5}};
+  now.spheres = {
+      {Vector3d(0, 0.3, 0), 0.5}, {Vector3d(1.3, 0.4, 0), 0.5}, {Vector3d(2, 0, 0.2), 0.5}};
   std::vector<Sphere> at; // after a restart: from now on
   EXPECT_EQ(membrane3d::moved_warning(now, at, 0.4, 10, 12), "");
   ASSERT_EQ(at.size(), 3u);
