@@ -16,14 +16,15 @@
 #include "group.h"
 #include "update.h"
 
-#include "membrane3d_checks.h"
+#include "membrane3d_messages.h"
 #include "membrane3d_record.h"
-#include "restart_envelope.h"
 #include "membrane3d_skin.h"
 #include "membrane3d_tuning.h"
 #include "membrane3d_vtk.h"
+#include "restart_envelope.h"
 
 using namespace LAMMPS_NS;
+using membrane3d::GatheredSpheres;
 
 namespace {
 
@@ -85,11 +86,18 @@ void FixMembrane3d::pre_force(int)
     detect();
     return;
   }
-  check_between_platens(lmp, prefix.c_str(), members, platens);
   if (!types.applied()) wear_types(members); // a run's start, after a restart write
-  if (!shared.automatic())
-    warn_if_moved(lmp, prefix.c_str(), members, detected_at, tolerance, last_detection,
-                  warned_moved);
+  if (shared.automatic() || warned_moved) return;
+  const std::string moved =
+      membrane3d::moved_warning(members, detected_at, tolerance, last_detection, update->ntimestep);
+  if (!moved.empty()) warn(moved);
+  warned_moved = !moved.empty();
+}
+
+// Each gather stops the run on an atom that is unusable or not between the platens.
+Membrane3dGather FixMembrane3d::gather() const
+{
+  return {lmp, prefix, groupbit, platens};
 }
 
 // This rank's view (on_any_rank makes it every rank's); when not due, `members`
@@ -104,11 +112,11 @@ bool FixMembrane3d::detection_due()
   if (member_tags.empty() || membrane::detection_scheduled(shared, step, last_detection))
     return true;
   if (shared.automatic() && !decided)
-    return automatic.can_have_changed(lmp, groupbit, platens, tolerance, step, members);
+    return automatic.can_have_changed(gather().for_auto(), platens, tolerance, d50, step, members);
   // platens moved beyond the tolerance (their images' links), an atom lost or gone from
   // the group (a restart read by a fix on another group)
   return membrane3d::moved_apart(platens, detected_platens, tolerance) ||
-         gather_tags(lmp, groupbit, member_tags, members) != member_tags.size();
+         gather().tags(member_tags, members) != member_tags.size();
 }
 
 void FixMembrane3d::post_force(int)
@@ -123,10 +131,10 @@ void FixMembrane3d::wear_types(const GatheredSpheres &g)
   std::vector<int> on_tags, on_types;
   for (std::size_t k = 0; k < member_tags.size(); k++)
     if (topology.side[k] == membrane3d::Side::surface) {
-      const auto at = std::lower_bound(g.tags.begin(), g.tags.end(), member_tags[k]);
-      if (at == g.tags.end() || *at != member_tags[k]) continue;
+      const int at = membrane3d::index_of(g, member_tags[k]);
+      if (at < 0) continue;
       on_tags.push_back(member_tags[k]);
-      on_types.push_back(g.types[at - g.tags.begin()]);
+      on_types.push_back(g.types[at]);
     }
   types.wear(on_tags, on_types);
 }
@@ -134,15 +142,16 @@ void FixMembrane3d::wear_types(const GatheredSpheres &g)
 void FixMembrane3d::detect()
 {
   GatheredSpheres all;
-  gather_group(lmp, groupbit, all);
-  check_between_platens(lmp, prefix.c_str(), all, platens);
-  check_enough_spheres(lmp, prefix.c_str(), group->names[igroup], all.spheres.size());
+  gather().group(all);
+  const std::string few =
+      membrane3d::too_few_spheres(group->names[igroup], all.spheres.size(), update->ntimestep);
+  if (!few.empty()) fail(few);
   std::vector<int> index;
   try {
     topology = membrane3d::members_only(
         shared.automatic()
-            ? automatic.detect(all, member_tags, platens, tolerance, update->ntimestep)
-            : detect_near_members(all, member_tags, platens, tolerance),
+            ? automatic.detect(all, member_tags, platens, tolerance, d50, update->ntimestep)
+            : membrane3d::detect_near_members(all, member_tags, platens, tolerance),
         index);
     if (shared.automatic()) automatic.set_members(index);
   } catch (const membrane3d::FlatSample &e) {
@@ -152,21 +161,14 @@ void FixMembrane3d::detect()
     fail(std::string(e.what()) + "; the group must be one packing whose spheres are linked "
                                  "(gaps within the tolerance)");
   }
-  member_tags.clear();
-  members.spheres.clear();
-  members.types.clear();
-  for (int k : index) {
-    member_tags.push_back(all.tags[k]);
-    members.spheres.push_back(all.spheres[k]);
-    members.types.push_back(all.types[k]);
-  }
-  members.tags = member_tags;
+  members = membrane3d::subset(all, index);
+  member_tags = members.tags;
   detected_at = members.spheres;
   wear_types(all);
   last_detection = update->ntimestep;
   detected_platens = platens;
   detections += 1.0;
-  check_ranks_agree(lmp, prefix.c_str(), member_tags, topology.facets.size());
+  check_ranks_agree(lmp, prefix, member_tags, topology.facets.size());
 }
 
 void FixMembrane3d::place_and_apply()
@@ -178,11 +180,16 @@ void FixMembrane3d::place_and_apply()
   } catch (const std::exception &e) {
     fail(std::string(e.what()) + "; the membrane found at the last detection cannot be placed");
   }
-  warn_if_open(lmp, prefix.c_str(), membrane, warned_rim);
+  const std::string open = membrane3d::open_warning(membrane, update->ntimestep);
+  if (!open.empty() && !warned_rim) warn(open);
+  warned_rim = warned_rim || !open.empty();
 
   std::vector<Eigen::Vector3d> load =
       membrane3d::membrane_loads(membrane, members.spheres.size(), pressure);
-  const Eigen::Vector3d net = check_closed(lmp, prefix.c_str(), load, pressure);
+  Eigen::Vector3d net;
+  const std::string open_loads =
+      membrane3d::closure_problem(load, pressure, update->ntimestep, net);
+  if (!open_loads.empty()) fail(open_loads);
   membrane3d::add_escape_loads(membrane, members.spheres, pressure, load);
 
   double **f = atom->f;

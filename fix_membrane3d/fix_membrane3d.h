@@ -26,6 +26,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include <cstdio>
 #include <vector>
 
+#include "gathered_spheres.h"
 #include "lateral_surface.h"
 #include "membrane3d_auto.h"
 #include "membrane3d_gather.h"
@@ -68,14 +69,14 @@ class FixMembrane3d : public MembraneFix {
   double memory_usage() override;
 
  private:
-  Membrane3dAuto automatic; // every auto
+  membrane3d::Membrane3dAuto automatic; // every auto
 
   // the last detection: its topology over the member atoms, their IDs, its step
   membrane3d::MembraneTopology topology;
   std::vector<int> member_tags;
   bigint last_detection = -1;
   membrane3d::Platens detected_platens{0.0, 0.0}; // at the last detection
-  bigint decided_step = -1; // the last step pre_force decided on
+  bigint decided_step = -1;                       // the last step pre_force decided on
   // the group at the end of the last run (or when the restart file was written): a
   // run that starts on another group (delete_atoms renumbers the IDs) finds the
   // membrane anew
@@ -85,16 +86,17 @@ class FixMembrane3d : public MembraneFix {
   double detections = 0.0;
 
   // this step
-  GatheredSpheres members; // the member atoms now, in member_tags' order
+  membrane3d::GatheredSpheres members; // the member atoms now, in member_tags' order
   membrane3d::Platens platens{0.0, 0.0};
   bool warned_rim = false;
   bool warned_moved = false; // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];
   bool centres_placed = false; // output[VOLUME] is this step's
 
+  Membrane3dGather gather() const; // this step's (membrane3d_gather.h)
   bool detection_due();
   void detect();
-  void wear_types(const GatheredSpheres &g);
+  void wear_types(const membrane3d::GatheredSpheres &g);
   void place_and_apply();
 };
 

@@ -1,59 +1,81 @@
 // fix membrane3d's every auto: the membrane is found again only when it can have
 // changed (detection_watch.h), with the result of a detection at every step. This
-// class keeps the watch of the last detection, gathers the atoms it needs each step
-// and decides; where the membrane changes at most steps it detects for a while
-// without building the watch (dense_detections.h). A restart carries the detection's
-// spheres, from which the watch is built again, and that schedule, so that a split
-// run detects when one straight through does.
+// class keeps the watch of the last detection and decides each step from what the
+// style gathers for it; where the membrane changes at most steps it detects for a
+// while without building the watch (dense_detections.h). A restart carries the
+// detection's spheres, from which the watch is built again, and that schedule, so that
+// a split run detects when one straight through does. No LIGGGHTS here: unit-tested
+// in tests/unit/membrane3d.
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_AUTO_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_AUTO_H
 
+#include <functional>
 #include <vector>
-
-#include "lammps.h"
 
 #include "dense_detections.h"
 #include "detection_watch.h"
-#include "membrane3d_gather.h"
+#include "gathered_spheres.h"
 #include "membrane3d_record.h"
+
+namespace membrane3d {
+
+// What is checked of the group each step before the watch: the same atoms (their
+// count and the sum of their IDs) and the same largest radius (the image band) as at
+// the detection.
+struct GroupSignature {
+  double atoms = 0.0, id_sum = 0.0, largest = 0.0;
+  void add(int tag, double r);
+  bool operator==(const GroupSignature &o) const
+  {
+    return atoms == o.atoms && id_sum == o.id_sum && largest == o.largest;
+  }
+};
 
 class Membrane3dAuto {
  public:
-  Membrane3dAuto(); // its dense schedule (membrane3d_auto.cpp)
+  // The group now, as the style gathers it (collective: every rank calls them alike).
+  struct Group {
+    std::function<GroupSignature()> signature;
+    // the group's atoms with these IDs (ascending), those no longer in it left out
+    std::function<void(const std::vector<int> &tags, GatheredSpheres &out)> gather;
+  };
 
-  // a detection on the group's spheres `all` (the whole topology, over all), without a
-  // watch from the skin of the last members (membrane3d_skin.h)
-  membrane3d::MembraneTopology detect(const GatheredSpheres &all,
-                                      const std::vector<int> &member_tags,
-                                      const membrane3d::Platens &platens, double tolerance,
-                                      long long step);
+  Membrane3dAuto(); // its dense schedule (membrane3d_tuning.h)
+
+  // A detection on the group's spheres `all` (the whole topology, over all), without a
+  // watch from the skin of the last members (membrane3d_skin.h); d50: the group's D50,
+  // the watch's budget in WATCH_BUDGET.
+  MembraneTopology detect(const GatheredSpheres &all, const std::vector<int> &member_tags,
+                          const Platens &platens, double tolerance, double d50, long long step);
   // its members (indices into all, ascending: members_only)
   void set_members(const std::vector<int> &members);
 
-  // This step (collective): whether the membrane found last can have changed; when
-  // not, `members` holds the member atoms now. Checks the group (its atoms, their
-  // IDs and largest radius) against the detection's.
-  bool can_have_changed(LAMMPS_NS::LAMMPS *lmp, int groupbit, const membrane3d::Platens &platens,
-                        double tolerance, long long step, GatheredSpheres &members);
+  // This step: whether the membrane found last can have changed; when not, `members`
+  // holds the member atoms now. Checks the group's signature against the detection's,
+  // then gathers the watched atoms.
+  bool can_have_changed(const Group &group, const Platens &platens, double tolerance, double d50,
+                        long long step, GatheredSpheres &members);
 
   // restart: the detection's spheres and platens, the schedule
-  void save(membrane3d::Membrane3dState &state) const;
-  void restore(const membrane3d::Membrane3dState &state);
+  void save(Membrane3dState &state) const;
+  void restore(const Membrane3dState &state);
 
   double memory_usage() const;
 
  private:
-  membrane3d::DetectionWatch watch;
+  DetectionWatch watch;
   bool built = false;
   DenseDetections dense;
-  GatheredSpheres sample;                // the group at the detection
-  membrane3d::Platens platens{0.0, 0.0}; // at the detection
-  std::vector<int> watched_tags;         // of watch.spheres
-  std::vector<int> member_entry;         // per member: its entry of watch.spheres
-  GatheredSpheres watched;               // this step
-  double signature[3] = {0.0, 0.0, 0.0}; // atoms, sum of IDs, largest radius
+  GatheredSpheres sample;        // the group at the detection
+  Platens platens{0.0, 0.0};     // at the detection
+  std::vector<int> watched_tags; // of watch.spheres
+  std::vector<int> member_entry; // per member: its entry of watch.spheres
+  GatheredSpheres watched;       // this step
+  GroupSignature signature;      // the sample's
 
-  membrane3d::MembraneTopology build(double tolerance);
+  MembraneTopology build(double tolerance, double d50);
 };
+
+} // namespace membrane3d
 
 #endif

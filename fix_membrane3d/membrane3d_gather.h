@@ -1,30 +1,38 @@
-// The spheres fix membrane3d works with, the same on every rank and sorted by atom ID,
-// so that every rank finds the same membrane whatever the number of ranks and the
-// processor grid.
+// The spheres fix membrane3d works with, gathered from every rank (gathered_spheres.h),
+// and its checks across the ranks. Each gather checks what it gathered: a sphere that
+// is unusable (atom_faults.h) or not strictly between the platens stops the run on
+// every rank at once with a message that starts with `prefix`, before anything is
+// computed on it.
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_GATHER_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_GATHER_H
 
+#include <string>
 #include <vector>
 
 #include "lammps.h"
 
-#include "exterior_flood.h"
+#include "gathered_spheres.h"
+#include "lateral_surface.h"
+#include "membrane3d_auto.h"
 
-struct GatheredSpheres {
-  std::vector<int> tags;                   // ascending
-  std::vector<membrane3d::Sphere> spheres; // in the same order
-  std::vector<int> types;                  // their atom types now
+struct Membrane3dGather {
+  LAMMPS_NS::LAMMPS *lmp;
+  const std::string &prefix;
+  int groupbit;
+  membrane3d::Platens platens; // this step's
+
+  // Every atom of the group.
+  void group(membrane3d::GatheredSpheres &out) const;
+  // The atoms of the group with these IDs (ascending), and their count: the caller
+  // compares it (an atom lost, or no longer in the group).
+  std::size_t tags(const std::vector<int> &tags, membrane3d::GatheredSpheres &out) const;
+  // The group's signature (collective) and tags(), for every auto.
+  membrane3d::Membrane3dAuto::Group for_auto() const;
 };
 
-// The spheres' mean diameter (0 for none).
-double mean_diameter(const GatheredSpheres &g);
-
-// Every atom of the group.
-void gather_group(LAMMPS_NS::LAMMPS *lmp, int groupbit, GatheredSpheres &out);
-
-// The atoms of the group with these IDs (ascending), and their count: the caller
-// compares it (an atom lost, or no longer in the group).
-std::size_t gather_tags(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<int> &tags,
-                 GatheredSpheres &out);
+// Every rank found the same members and facets (they computed them from the same
+// spheres: a disagreement is a bug, stopped here rather than left to hang the run).
+void check_ranks_agree(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix,
+                       const std::vector<int> &member_tags, std::size_t facets);
 
 #endif
