@@ -33,13 +33,6 @@ inline std::string keyword_text(const std::string &key, const std::string &value
   return "keyword '" + key + "' = " + (value.empty() ? "''" : value) + ": " + problem;
 }
 
-// the same with the prefix in front
-inline std::string keyword_message(const std::string &prefix, const std::string &key,
-                                   const std::string &value, const std::string &problem)
-{
-  return prefix + keyword_text(key, value, problem);
-}
-
 class StyleArgs {
  public:
   StyleArgs(LAMMPS_NS::LAMMPS *lmp, std::string prefix, int narg, char **arg, int first)
@@ -145,7 +138,6 @@ class StyleArgs {
     fail("keyword '" + key + "' is required: " + usage);
   }
 
-  const std::string &current_key() const { return key_; }
   const char *current_value() const { return value_; }
 
  private:

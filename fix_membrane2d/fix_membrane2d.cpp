@@ -122,9 +122,7 @@ void FixMembrane2d::setup_pre_force(int vflag)
   // the chains of the last run (or the restart file) still hold when no disk
   // of the group was created, deleted, renumbered, retyped or moved since
   // (this step's detection, if any, was then done in the last step of that run)
-  const bool kept = state_kept && group_checksum() == run.checksum;
-  state_kept = false;
-  if (kept) {
+  if (group_as_remembered()) {
     gather_watched();
     wear_chain_types();
     // other platens (a restart, a jump) or a step counter set back: detect now, the
@@ -153,8 +151,7 @@ void FixMembrane2d::forget_state()
 void FixMembrane2d::post_run()
 {
   types.restore();
-  run.checksum = group_checksum();
-  state_kept = true;
+  remember_group(group_checksum());
   gather.report_traffic(id, update->ntimestep, run.counters.detections);
 }
 
@@ -262,12 +259,12 @@ void FixMembrane2d::restart(char *raw)
   const std::string why =
       read_record(reinterpret_cast<const double *>(raw), RestartRecordReader::UNKNOWN_LENGTH,
                   definition, same, run, chains);
-  if (!why.empty()) fail(restart_unreadable(id, why, !same));
+  if (!why.empty()) fail(restart_unreadable(why, !same));
   if (!same) {
-    warn(restart_other_definition(id));
+    warn(restart_other_definition("sides, frictionless, every, band, tolerance or thickness"));
     return;
   }
-  state_kept = true;
+  remember_group(run.checksum);
   build_watch_list(chains, automatic(), watch_list);
 }
 

@@ -75,11 +75,6 @@ class FixMembrane2d : public MembraneFix {
   double vector_values[membrane::OUTPUT_SIZE];
   double warned_dt = 0.0; // the time step last warned about
 
-  // The chain state is kept from one run to the next (and through restart
-  // files) when the group's disks are as they were (a checksum of tags,
-  // types, radii and positions at the start of the run).
-  bool state_kept = false;
-
   int flag_capacity = 0; // rows of vector_atom
 
   bool automatic() const { return shared.automatic(); }

@@ -223,7 +223,7 @@ void MembraneGather::check_enclosed(const ScalarInput &ylo_in, double ylo,
   MPI_Allreduce(&mine[0], &lo, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(&mine[1], &hi, 1, MPI_DOUBLE, MPI_MAX, world);
   const std::string below = membrane::enclose_problem(false, ylo, lo);
-  if (!below.empty()) style_error(lmp, "", keyword_message(prefix_, "ylo", ylo_in.text(), below));
+  if (!below.empty()) style_error(lmp, prefix_, keyword_text("ylo", ylo_in.text(), below));
   const std::string above = membrane::enclose_problem(true, yhi, hi);
-  if (!above.empty()) style_error(lmp, "", keyword_message(prefix_, "yhi", yhi_in.text(), above));
+  if (!above.empty()) style_error(lmp, prefix_, keyword_text("yhi", yhi_in.text(), above));
 }

@@ -115,22 +115,6 @@ std::string not_finite_error(long long step)
          ": the run has gone unstable; reduce the time step or the loading rate";
 }
 
-std::string restart_unreadable(const std::string &id, const std::string &reason, bool other_format)
-{
-  return "the restart file's state of fix " + id + " cannot be read: " + reason +
-         (other_format ? "; read it with the version that wrote it, or define this fix with "
-                         "another ID (the chains are then found again)"
-                       : "");
-}
-
-std::string restart_other_definition(const std::string &id)
-{
-  return "fix " + id +
-         " is defined otherwise than in the restart file (sides, frictionless, every, band, "
-         "tolerance or thickness): its chains are found again at the first step and its counters "
-         "start from 0";
-}
-
 std::string traffic_summary(double step_bytes, double detection_bytes,
                             long long steps, long long detections, long long full_passes,
                             double fix_seconds, double search_seconds)

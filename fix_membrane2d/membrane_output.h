@@ -63,12 +63,6 @@ std::string chain_lost_warning(const std::string &where, const std::string &why)
 std::string lost_disk_error(long long step);
 std::string not_finite_error(long long step);
 
-// Why fix `id` cannot use the state of a restart file: its record cannot be
-// read (`reason`; `other_format`: written by another version), or the fix is
-// defined otherwise than in the file.
-std::string restart_unreadable(const std::string &id, const std::string &reason, bool other_format);
-std::string restart_other_definition(const std::string &id);
-
 // What one rank received in the fix's collectives during a run of `steps`
 // steps with `detections` detections (`full_passes` of them looked at every
 // disk of the rank, the others at the band candidates only), and the seconds

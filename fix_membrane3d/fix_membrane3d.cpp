@@ -57,7 +57,7 @@ void FixMembrane3d::init()
 void FixMembrane3d::setup_pre_force(int vflag)
 {
   // the group changed between two runs: its member IDs may name other spheres now
-  if (has_checksum && group_checksum() != checksum) member_tags.clear();
+  if (!group_as_remembered()) member_tags.clear();
   pre_force(vflag);
 }
 
@@ -72,8 +72,7 @@ void FixMembrane3d::setup(int vflag)
 void FixMembrane3d::post_run()
 {
   types.restore();
-  checksum = group_checksum();
-  has_checksum = true;
+  remember_group(group_checksum());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -128,7 +127,8 @@ void FixMembrane3d::post_force(int)
 void FixMembrane3d::wear_types(const GatheredSpheres &g)
 {
   if (types.type() <= 0) return;
-  std::vector<int> on_tags, on_types;
+  std::vector<AtomId> on_tags;
+  std::vector<int> on_types;
   for (std::size_t k = 0; k < member_tags.size(); k++)
     if (topology.side[k] == membrane3d::Side::surface) {
       const int at = membrane3d::index_of(g, member_tags[k]);
@@ -257,12 +257,9 @@ void FixMembrane3d::restart(char *raw)
   const std::string why = membrane3d::read_record(reinterpret_cast<const double *>(raw),
                                                   RestartRecordReader::UNKNOWN_LENGTH, state);
   if (!why.empty())
-    fail(std::string("cannot read fix ") + id + "'s record in the restart file: " + why +
-         "; unfix it before write_restart, or define it anew after read_restart");
+    fail(membrane::restart_unreadable(why, true));
   if (state.tolerance_given != shared.tolerance_given || state.every != shared.every) {
-    warn(std::string("fix ") + id +
-         " is defined with another tolerance or every than in the restart file: the membrane "
-         "is found anew");
+    warn(membrane::restart_other_definition("tolerance or every"));
     return;
   }
   detections = state.detections;
@@ -271,14 +268,13 @@ void FixMembrane3d::restart(char *raw)
   member_tags = state.member_tags;
   topology = state.topology;
   detected_platens = state.detected_platens;
-  has_checksum = state.has_checksum;
-  checksum = state.checksum;
+  if (state.has_checksum) remember_group(state.checksum);
   if (shared.automatic()) automatic.restore(state);
 }
 
 double FixMembrane3d::memory_usage()
 {
-  return static_cast<double>(member_tags.capacity() * sizeof(int) +
+  return static_cast<double>(member_tags.capacity() * sizeof(AtomId) +
                              topology.facets.capacity() * sizeof(topology.facets[0]) +
                              (members.spheres.capacity() + detected_at.capacity()) *
                                  sizeof(membrane3d::Sphere)) +

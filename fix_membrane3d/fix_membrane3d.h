@@ -73,15 +73,10 @@ class FixMembrane3d : public MembraneFix {
 
   // the last detection: its topology over the member atoms, their IDs, its step
   membrane3d::MembraneTopology topology;
-  std::vector<int> member_tags;
+  std::vector<AtomId> member_tags;
   bigint last_detection = -1;
   membrane3d::Platens detected_platens{0.0, 0.0}; // at the last detection
   bigint decided_step = -1;                       // the last step pre_force decided on
-  // the group at the end of the last run (or when the restart file was written): a
-  // run that starts on another group (delete_atoms renumbers the IDs) finds the
-  // membrane anew
-  bool has_checksum = false;
-  std::uint64_t checksum = 0;
   std::vector<membrane3d::Sphere> detected_at; // the members then (after a restart: at its start)
   double detections = 0.0;
 

@@ -11,7 +11,7 @@ double mean_diameter(const GatheredSpheres &g)
   return g.spheres.empty() ? 0.0 : diameter / static_cast<double>(g.spheres.size());
 }
 
-int index_of(const GatheredSpheres &g, int tag)
+int index_of(const GatheredSpheres &g, AtomId tag)
 {
   const auto at = std::lower_bound(g.tags.begin(), g.tags.end(), tag);
   return at != g.tags.end() && *at == tag ? static_cast<int>(at - g.tags.begin()) : -1;

@@ -6,12 +6,13 @@
 
 #include <vector>
 
+#include "atom_id.h"
 #include "exterior_flood.h"
 
 namespace membrane3d {
 
 struct GatheredSpheres {
-  std::vector<int> tags;       // ascending
+  std::vector<AtomId> tags;    // ascending
   std::vector<Sphere> spheres; // in the same order
   std::vector<int> types;      // their atom types now
 };
@@ -20,7 +21,7 @@ struct GatheredSpheres {
 double mean_diameter(const GatheredSpheres &g);
 
 // The entry of atom `tag` in g, -1 when g does not hold it.
-int index_of(const GatheredSpheres &g, int tag);
+int index_of(const GatheredSpheres &g, AtomId tag);
 
 // The entries `index` of g, in that order.
 GatheredSpheres subset(const GatheredSpheres &g, const std::vector<int> &index);

@@ -7,7 +7,7 @@
 
 namespace membrane3d {
 
-void GroupSignature::add(int tag, double r)
+void GroupSignature::add(AtomId tag, double r)
 {
   atoms += 1.0;
   id_sum += static_cast<double>(tag);
@@ -22,7 +22,7 @@ Membrane3dAuto::Membrane3dAuto()
 }
 
 MembraneTopology Membrane3dAuto::detect(const GatheredSpheres &all,
-                                        const std::vector<int> &member_tags, const Platens &at,
+                                        const std::vector<AtomId> &member_tags, const Platens &at,
                                         double tolerance, double d50, long long step)
 {
   platens = at;

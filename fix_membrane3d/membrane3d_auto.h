@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "atom_id.h"
 #include "dense_detections.h"
 #include "detection_watch.h"
 #include "gathered_spheres.h"
@@ -24,7 +25,7 @@ namespace membrane3d {
 // the detection.
 struct GroupSignature {
   double atoms = 0.0, id_sum = 0.0, largest = 0.0;
-  void add(int tag, double r);
+  void add(AtomId tag, double r);
   bool operator==(const GroupSignature &o) const
   {
     return atoms == o.atoms && id_sum == o.id_sum && largest == o.largest;
@@ -37,7 +38,7 @@ class Membrane3dAuto {
   struct Group {
     std::function<GroupSignature()> signature;
     // the group's atoms with these IDs (ascending), those no longer in it left out
-    std::function<void(const std::vector<int> &tags, GatheredSpheres &out)> gather;
+    std::function<void(const std::vector<AtomId> &tags, GatheredSpheres &out)> gather;
   };
 
   Membrane3dAuto(); // its dense schedule (membrane3d_tuning.h)
@@ -45,7 +46,7 @@ class Membrane3dAuto {
   // A detection on the group's spheres `all` (the whole topology, over all), without a
   // watch from the skin of the last members (membrane3d_skin.h); d50: the group's D50,
   // the watch's budget in WATCH_BUDGET.
-  MembraneTopology detect(const GatheredSpheres &all, const std::vector<int> &member_tags,
+  MembraneTopology detect(const GatheredSpheres &all, const std::vector<AtomId> &member_tags,
                           const Platens &platens, double tolerance, double d50, long long step);
   // its members (indices into all, ascending: members_only)
   void set_members(const std::vector<int> &members);
@@ -68,7 +69,7 @@ class Membrane3dAuto {
   DenseDetections dense;
   GatheredSpheres sample;        // the group at the detection
   Platens platens{0.0, 0.0};     // at the detection
-  std::vector<int> watched_tags; // of watch.spheres
+  std::vector<AtomId> watched_tags; // of watch.spheres
   std::vector<int> member_entry; // per member: its entry of watch.spheres
   GatheredSpheres watched;       // this step
   GroupSignature signature;      // the sample's

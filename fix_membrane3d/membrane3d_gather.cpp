@@ -52,7 +52,7 @@ void share(const Membrane3dGather &from, const std::vector<double> &send, Gather
   const bigint step = from.lmp->update->ntimestep;
   for (std::size_t k : order) {
     const double *f = &all[k * FIELDS];
-    const int tag = static_cast<int>(f[F_TAG]);
+    const AtomId tag = static_cast<AtomId>(f[F_TAG]);
     // a fault of the input (a run gone unstable, a radius set to 0) named as such
     if (atom_is_faulty(f + F_X, 3, f[F_R]))
       style_error(from.lmp, from.prefix, atom_fault_text(tag, f + F_X, 3, f[F_R], step));
@@ -75,11 +75,11 @@ void Membrane3dGather::group(GatheredSpheres &out) const
   share(*this, send, out);
 }
 
-std::size_t Membrane3dGather::tags(const std::vector<int> &tags, GatheredSpheres &out) const
+std::size_t Membrane3dGather::tags(const std::vector<AtomId> &tags, GatheredSpheres &out) const
 {
   Atom *atom = lmp->atom;
   std::vector<double> send;
-  for (int tag : tags) {
+  for (AtomId tag : tags) {
     const int i = tag <= atom->map_tag_max ? atom->map(tag) : -1;
     // owned here, and the map not stale (the slot holds that atom)
     if (i >= 0 && i < atom->nlocal && atom->tag[i] == tag && (atom->mask[i] & groupbit))
@@ -105,14 +105,14 @@ membrane3d::Membrane3dAuto::Group Membrane3dGather::for_auto() const
     return s;
   };
   return {signature,
-          [self](const std::vector<int> &tags, GatheredSpheres &out) { self.tags(tags, out); }};
+          [self](const std::vector<AtomId> &tags, GatheredSpheres &out) { self.tags(tags, out); }};
 }
 
-void check_ranks_agree(LAMMPS *lmp, const std::string &prefix, const std::vector<int> &member_tags,
+void check_ranks_agree(LAMMPS *lmp, const std::string &prefix, const std::vector<AtomId> &member_tags,
                        std::size_t facets)
 {
   double mine[3] = {static_cast<double>(member_tags.size()), static_cast<double>(facets), 0.0};
-  for (int tag : member_tags) mine[2] += tag;
+  for (AtomId tag : member_tags) mine[2] += tag;
   double lo[3], hi[3];
   MPI_Allreduce(mine, lo, 3, MPI_DOUBLE, MPI_MIN, lmp->world);
   MPI_Allreduce(mine, hi, 3, MPI_DOUBLE, MPI_MAX, lmp->world);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "atom_id.h"
 #include "lammps.h"
 
 #include "gathered_spheres.h"
@@ -25,7 +26,7 @@ struct Membrane3dGather {
   void group(membrane3d::GatheredSpheres &out) const;
   // The atoms of the group with these IDs (ascending), and their count: the caller
   // compares it (an atom lost, or no longer in the group).
-  std::size_t tags(const std::vector<int> &tags, membrane3d::GatheredSpheres &out) const;
+  std::size_t tags(const std::vector<AtomId> &tags, membrane3d::GatheredSpheres &out) const;
   // The group's signature (collective) and tags(), for every auto.
   membrane3d::Membrane3dAuto::Group for_auto() const;
 };
@@ -33,6 +34,6 @@ struct Membrane3dGather {
 // Every rank found the same members and facets (they computed them from the same
 // spheres: a disagreement is a bug, stopped here rather than left to hang the run).
 void check_ranks_agree(LAMMPS_NS::LAMMPS *lmp, const std::string &prefix,
-                       const std::vector<int> &member_tags, std::size_t facets);
+                       const std::vector<AtomId> &member_tags, std::size_t facets);
 
 #endif

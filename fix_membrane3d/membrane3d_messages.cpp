@@ -7,7 +7,7 @@
 
 namespace membrane3d {
 
-std::string platens_problem(int tag, double z, const Platens &platens, long long step)
+std::string platens_problem(AtomId tag, double z, const Platens &platens, long long step)
 {
   if (z > platens.lo && z < platens.hi) return "";
   return "atom " + std::to_string(tag) + " at z = " + number_text(z) +

@@ -9,13 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "atom_id.h"
 #include "gathered_spheres.h"
 #include "lateral_surface.h"
 
 namespace membrane3d {
 
 // Atom `tag`'s centre at height z strictly between the platens at `step`.
-std::string platens_problem(int tag, double z, const Platens &platens, long long step);
+std::string platens_problem(AtomId tag, double z, const Platens &platens, long long step);
 
 // At least the four spheres of a tetrahedron in the group (named) at a detection.
 std::string too_few_spheres(const std::string &group, std::size_t spheres, long long step);

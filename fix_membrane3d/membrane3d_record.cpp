@@ -60,7 +60,7 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
   in.detections = r.get();
   const std::size_t members = r.count(2);
   for (std::size_t k = 0; k < members && r.ok(); ++k) {
-    in.member_tags.push_back(static_cast<int>(r.get()));
+    in.member_tags.push_back(static_cast<AtomId>(r.get()));
     const int side = static_cast<int>(r.get());
     if (side < 0 || side > static_cast<int>(Side::outside)) return "a sphere's side is corrupt";
     in.topology.side.push_back(static_cast<Side>(side));
@@ -84,7 +84,7 @@ std::string read_record(const double *data, std::size_t n, Membrane3dState &s) {
     in.sample_platens.hi = r.get();
     const std::size_t spheres = r.count(5);
     for (std::size_t k = 0; k < spheres && r.ok(); ++k) {
-      in.sample_tags.push_back(static_cast<int>(r.get()));
+      in.sample_tags.push_back(static_cast<AtomId>(r.get()));
       Sphere sphere;
       for (int d = 0; d < 3; ++d) sphere.x[d] = r.get();
       sphere.r = r.get();

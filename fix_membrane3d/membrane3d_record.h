@@ -7,6 +7,7 @@
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE3D_RECORD_H
 
+#include "atom_id.h"
 #include "lateral_surface.h"
 
 #include <cstddef>
@@ -26,10 +27,10 @@ struct Membrane3dState {
   double last_detection = -1;   // step
   double decided_step = -1;     // the last step whose detection was decided (version 3)
   double detections = 0;
-  std::vector<int> member_tags;
+  std::vector<AtomId> member_tags;
   MembraneTopology topology;    // over the members
   // with every auto: the group's spheres at the detection (by ID) and the platens
-  std::vector<int> sample_tags;
+  std::vector<AtomId> sample_tags;
   std::vector<Sphere> sample;
   Platens sample_platens{0, 0};
   double window_steps = 0, window_detections = 0, unwatched_until = -1; // DenseDetections

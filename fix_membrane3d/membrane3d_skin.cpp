@@ -6,11 +6,11 @@
 namespace membrane3d {
 
 MembraneTopology detect_near_members(const GatheredSpheres &all,
-                                     const std::vector<int> &member_tags, const Platens &platens,
+                                     const std::vector<AtomId> &member_tags, const Platens &platens,
                                      double tolerance)
 {
   std::vector<int> seeds;
-  for (int tag : member_tags) {
+  for (AtomId tag : member_tags) {
     const int k = index_of(all, tag);
     if (k >= 0) seeds.push_back(k);
   }

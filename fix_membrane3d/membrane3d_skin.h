@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "atom_id.h"
 #include "gathered_spheres.h"
 #include "lateral_surface.h"
 
@@ -17,7 +18,7 @@ namespace membrane3d {
 // `member_tags` (ascending; those no longer in `all` are passed over; none: around the
 // outermost spheres).
 MembraneTopology detect_near_members(const GatheredSpheres &all,
-                                     const std::vector<int> &member_tags, const Platens &platens,
+                                     const std::vector<AtomId> &member_tags, const Platens &platens,
                                      double tolerance);
 
 } // namespace membrane3d

@@ -17,7 +17,7 @@ constexpr double MOST_TOLERANCE = 2.0;
 // zero but for the round-off of summing them.
 constexpr double CLOSURE_ROUND_OFF = 1e-9;
 
-// every auto: the watch's budget in D50 (as fix membrane2d's): a certificate that no
+// every auto: the watch's budget in D50 (fix membrane2d's is 0.01 D50): a certificate that no
 // motion below it can flip is not evaluated again, and the membrane is found again when
 // a watched sphere has moved that far (flood_watch.h). It decides how often the watch
 // is built again, never the membrane (every auto gives the results of every 1).

@@ -32,8 +32,8 @@ void check_file_opened(LAMMPS *lmp, const std::string &prefix, const std::string
   if (lmp->comm->me == 0) std::snprintf(text, sizeof(text), "%s", reason.c_str());
   MPI_Bcast(text, sizeof(text), MPI_CHAR, 0, lmp->world);
   if (text[0])
-    style_error(lmp, "",
-                keyword_message(prefix, key, file,
+    style_error(lmp, prefix,
+                keyword_text(key, file,
                                 std::string("cannot open the file for writing (") + text +
                                     "); check that its folder exists and is writable"));
 }
@@ -61,7 +61,7 @@ void VtkFrames::write(bigint step, const std::string &frame)
   // a step written again (a run of 0 steps, a second run from the same step) replaces its frame
   const std::string why = series_.add(step, frame);
   if (!why.empty())
-    style_error_one(lmp, "",
-                    keyword_message(prefix_, "vtk", series_.frame_path(step),
+    style_error_one(lmp, prefix_,
+                    keyword_text("vtk", series_.frame_path(step),
                                     "cannot write the frame (" + why + ")"));
 }

@@ -109,8 +109,8 @@ void same_on_every_rank(LAMMPS *lmp, const std::string &prefix,
     const double spread = hi[k] - lo[k];
     if (warned || !(spread > 1e-12 * std::fabs(v[k]))) continue;
     warned = true;
-    style_warning(lmp, "",
-                  keyword_message(prefix, names[k], inputs[k]->text(),
+    style_warning(lmp, prefix,
+                  keyword_text(names[k], inputs[k]->text(),
                                   "differs between the ranks by " + number_text(spread) +
                                       " at step " + std::to_string(lmp->update->ntimestep) +
                                       "; rank 0's value is used (a mesh's reference point "

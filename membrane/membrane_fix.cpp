@@ -111,8 +111,8 @@ void MembraneFix::init_shared()
   const std::string problem =
       membrane::tolerance_problem(tolerance, d50, traits.most_tolerance, traits.default_tolerance);
   if (!problem.empty())
-    style_error(lmp, "",
-                keyword_message(prefix, "tolerance", number_text(tolerance), problem));
+    style_error(lmp, prefix,
+                keyword_text("tolerance", number_text(tolerance), problem));
 }
 
 void MembraneFix::evaluate_inputs()
@@ -137,6 +137,19 @@ bool MembraneFix::on_any_rank(bool mine) const
 std::uint64_t MembraneFix::group_checksum() const
 {
   return ::group_checksum(lmp, groupbit, traits.dimension);
+}
+
+void MembraneFix::remember_group(std::uint64_t checksum)
+{
+  remembered_group_ = checksum;
+  group_remembered_ = true;
+}
+
+bool MembraneFix::group_as_remembered()
+{
+  const bool same = group_remembered_ && group_checksum() == remembered_group_;
+  group_remembered_ = false;
+  return same;
 }
 
 int MembraneFix::pack_restart(int i, double *buf)

@@ -87,12 +87,20 @@ class MembraneFix : public Fix {
   bool on_any_rank(bool mine) const;
   // order-free hash of the group's atoms (IDs, types, positions, radii): collective
   std::uint64_t group_checksum() const;
+  // The group as the last run ended (post_run) or as a restart record holds it: the
+  // membrane of that run is kept only by a run that starts on the same group
+  // (delete_atoms renumbers the IDs; create_atoms, set, displace_atoms change it).
+  void remember_group(std::uint64_t checksum);
+  // collective; false when no group is remembered, and forgets it (asked once a run)
+  bool group_as_remembered();
   [[noreturn]] void fail(const std::string &text) const;
   void warn(const std::string &text) const;
 
  private:
   std::vector<std::string> keywords_; // all, in the order of the message
   bool warned_spread_ = false;        // an input differing between the ranks
+  bool group_remembered_ = false;
+  std::uint64_t remembered_group_ = 0;
 };
 
 } // namespace LAMMPS_NS

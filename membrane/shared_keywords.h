@@ -34,6 +34,12 @@ inline bool detection_scheduled(const SharedKeywords &k, long long step, long lo
 // what is wrong with it, with the style's default (`usual` x D50).
 std::string tolerance_problem(double tolerance, double d50, double most, double usual);
 
+// Why a membrane cannot use its state in a restart file: the record cannot be read
+// (`reason`; `other_format`: another version wrote it), or the fix is defined
+// otherwise than in the file (`keywords`: those compared).
+std::string restart_unreadable(const std::string &reason, bool other_format);
+std::string restart_other_definition(const std::string &keywords);
+
 } // namespace membrane
 
 #endif

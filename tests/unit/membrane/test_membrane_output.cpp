@@ -78,10 +78,6 @@ TEST(MembraneOutput, WarningsNameTheNumbers)
   EXPECT_NE(i.find("I = 0.002 > 0.001 at step 5000 (axial strain rate 0.5 1/s"), std::string::npos)
       << i;
   EXPECT_NE(i.find("lower the loading rate below 0.25 1/s"), std::string::npos) << i;
-  EXPECT_EQ(restart_unreadable("m", "it is cut", false),
-            "the restart file's state of fix m cannot be read: it is cut");
-  EXPECT_NE(restart_unreadable("m", "x", true).find("read it with the version that wrote it"),
-            std::string::npos);
 }
 
 TEST(MembraneOutput, TrafficPerStepAndPerDetection)

@@ -62,3 +62,14 @@ TEST(SharedKeywords, ToleranceIsLimitedInD50)
   // absurd: refused
   EXPECT_EQ(membrane::tolerance_problem(1e300, 2e-3, 2.0, 0.7).substr(0, 3), "is ");
 }
+
+TEST(SharedKeywords, RestartMessagesSayWhatIsFoundAnew)
+{
+  EXPECT_EQ(membrane::restart_unreadable("it is cut", false),
+            "this fix's state in the restart file cannot be read: it is cut");
+  EXPECT_NE(membrane::restart_unreadable("x", true).find("read it with the version that wrote it"),
+            std::string::npos);
+  EXPECT_EQ(membrane::restart_other_definition("tolerance or every"),
+            "this fix is defined otherwise than in the restart file (tolerance or every): the "
+            "membrane is found anew at the first step and its counters start from 0");
+}
