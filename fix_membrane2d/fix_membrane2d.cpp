@@ -117,7 +117,7 @@ void FixMembrane2d::init()
 void FixMembrane2d::setup_pre_force(int vflag)
 {
   evaluate_inputs();
-  gather.check_enclosed(inputs.lo, lo, inputs.hi, hi);
+  gather.check_enclosed(inputs.lo, platens.lo, inputs.hi, platens.hi);
   gather.start_traffic(update->ntimestep, run.counters.detections);
   // the chains of the last run (or the restart file) still hold when no disk
   // of the group was created, deleted, renumbered, retyped or moved since
@@ -127,7 +127,7 @@ void FixMembrane2d::setup_pre_force(int vflag)
     wear_chain_types();
     // other platens (a restart, a jump) or a step counter set back: detect now, the
     // kept chains the fallback
-    if (!platens_moved(run, platens(), platen_move_limit(run, d50)) &&
+    if (!platens_moved(run, platens, platen_move_limit(run, d50)) &&
         update->ntimestep >= run.last_detection)
       return;
     run.force_detection = true;
@@ -168,11 +168,11 @@ void FixMembrane2d::pre_force(int)
   evaluate_inputs();
   const bigint step = update->ntimestep;
   const bool unwatched = automatic() && unwatched_step(run, step);
-  bool detect = on_any_rank(detection_due(run, shared, step, platens(), d50));
+  bool detect = on_any_rank(detection_due(run, shared, step, platens, d50));
   if (!detect) {
     gather_watched();
     // from what every rank gathered: the same on every rank
-    detect = automatic() && detection_needed(chains, platens(),
+    detect = automatic() && detection_needed(chains, platens,
                                              Platens{run.ylo_detected, run.yhi_detected},
                                              run.tolerance, watched.band_displacement,
                                              WATCH_BUDGET * d50);
@@ -191,13 +191,13 @@ void FixMembrane2d::pre_force(int)
 void FixMembrane2d::detect_chains(bool watch_it)
 {
   const bool active[2] = {chains[LEFT].active, chains[RIGHT].active};
-  const WatchSettings watch{platens(), run.tolerance, WATCH_BUDGET * d50};
+  const WatchSettings watch{platens, run.tolerance, WATCH_BUDGET * d50};
   auto search = [&](double width, const bool (&pending)[2], ChainResult (&results)[2]) {
-    gather.bands(platens(), width, active, sides);
-    gather.search(finder, sides, pending, platens(), run.tolerance, results);
+    gather.bands(platens, width, active, sides);
+    gather.search(finder, sides, pending, platens, run.tolerance, results);
   };
   for (const Notice &n : detect(chains, sides, run, watch_list, d50, automatic(),
-                                watch_it ? &watch : nullptr, platens(), update->ntimestep, search))
+                                watch_it ? &watch : nullptr, platens, update->ntimestep, search))
     n.fatal ? fail(n.text) : warn(n.text);
 }
 
@@ -223,13 +223,13 @@ void FixMembrane2d::post_force(int)
   // positions of the chain disks: gathered in pre_force (they do not move in between)
   for (int k = LEFT; k <= RIGHT; k++)
     if (chains[k].active)
-      load_side(sides[k].chain_disks, chains[k].side, platens(), pressure, definition.thickness,
+      load_side(sides[k].chain_disks, chains[k].side, platens, pressure, definition.thickness,
                 loads[k]);
   auto owned = [&](AtomId tag) { return gather.owned_index(tag); };
   add_forces(chains, sides, loads, pressure, definition.thickness, gather.local(), owned, atom->f);
   for (const std::string &w :
        stability_warnings(run, watched.chain_step, watched.chain_step_tag, update->ntimestep,
-                          hi - lo, update->dt, d50, density, pressure))
+                          platens.hi - platens.lo, update->dt, d50, density, pressure))
     warn(w);
   if (atom->nmax > flag_capacity) {
     memory->destroy(vector_atom);
@@ -237,7 +237,7 @@ void FixMembrane2d::post_force(int)
     memory->create(vector_atom, flag_capacity, "membrane2d:flag");
   }
   set_flags(chains, atom->nlocal, owned, vector_atom);
-  output_vector(chains, loads, run, platens(), pressure, watched.chain_step, vector_values);
+  output_vector(chains, loads, run, platens, pressure, watched.chain_step, vector_values);
   const bigint step = update->ntimestep;
   const std::string why = polyline.due(step) ? polyline.write(step, chains, sides, loads) : "";
   if (!why.empty()) style_error_one(lmp, prefix, keyword_text("polyline", polyline.path(), why));

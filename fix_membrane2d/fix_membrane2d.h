@@ -78,7 +78,6 @@ class FixMembrane2d : public MembraneFix {
   int flag_capacity = 0; // rows of vector_atom
 
   bool automatic() const { return shared.automatic(); }
-  membrane::Platens platens() const { return membrane::Platens{lo, hi}; }
   void forget_state();
   void detect_chains(bool watch_it); // watch_it: every auto builds the watch of each side
   void gather_watched();

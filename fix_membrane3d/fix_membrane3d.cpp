@@ -80,7 +80,6 @@ void FixMembrane3d::post_run()
 void FixMembrane3d::pre_force(int)
 {
   evaluate_inputs();
-  platens = {lo, hi};
   if (on_any_rank(detection_due())) {
     detect();
     return;

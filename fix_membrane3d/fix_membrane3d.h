@@ -82,7 +82,6 @@ class FixMembrane3d : public MembraneFix {
 
   // this step
   membrane3d::GatheredSpheres members; // the member atoms now, in member_tags' order
-  membrane3d::Platens platens{0.0, 0.0};
   bool warned_rim = false;
   bool warned_moved = false; // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];

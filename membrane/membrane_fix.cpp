@@ -122,9 +122,10 @@ void MembraneFix::evaluate_inputs()
   const char *const names[3] = {"pressure", traits.lo_key, traits.hi_key};
   same_on_every_rank(lmp, prefix, given, names, v, warned_spread_);
   pressure = inputs.pressure.checked(lmp, prefix, "pressure", true, v[0]);
-  lo = inputs.lo.checked(lmp, prefix, traits.lo_key, false, v[1]);
-  hi = inputs.hi.checked(lmp, prefix, traits.hi_key, false, v[2]);
-  check_platens_in_order(lmp, prefix, traits.lo_key, inputs.lo, lo, traits.hi_key, inputs.hi, hi);
+  platens.lo = inputs.lo.checked(lmp, prefix, traits.lo_key, false, v[1]);
+  platens.hi = inputs.hi.checked(lmp, prefix, traits.hi_key, false, v[2]);
+  check_platens_in_order(lmp, prefix, traits.lo_key, inputs.lo, platens.lo, traits.hi_key,
+                         inputs.hi, platens.hi);
 }
 
 bool MembraneFix::on_any_rank(bool mine) const

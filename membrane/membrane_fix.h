@@ -25,6 +25,7 @@
 #include "frame_files.h"
 #include "frictionless_atoms.h"
 #include "platen_inputs.h"
+#include "platens.h"
 #include "shared_keywords.h"
 
 class StyleArgs;
@@ -66,7 +67,8 @@ class MembraneFix : public Fix {
   VtkFrames vtk;
   FrictionlessAtoms types;
   // this step's inputs, the same on every rank (rank 0's)
-  double pressure = 0.0, lo = 0.0, hi = 0.0;
+  double pressure = 0.0;
+  membrane::Platens platens{0.0, 0.0};
   // set by init_shared: the group's D50 by mass and density (contact_scales.h), the
   // tolerance in use
   double d50 = 0.0, density = 0.0, tolerance = 0.0;
