@@ -65,6 +65,22 @@ void data_array(std::string &out, const char *type, const char *name, int ncomp,
   out += "\n        </DataArray>\n";
 }
 
+// Ends the PointData and writes the Points block of `n` points, `point(k)` giving
+// point k.
+template <class Point>
+void points_block(std::string &out, std::size_t n, Point point)
+{
+  out += "      </PointData>\n      <Points>\n";
+  data_array(out, "Float64", "Points", 3, n, point);
+  out += "      </Points>\n";
+}
+
+// The end of a one-piece PolyData file, after its cell blocks.
+inline void polydata_end(std::string &out)
+{
+  out += "    </Piece>\n  </PolyData>\n</VTKFile>\n";
+}
+
 // A PolyData cell block (Verts, Lines, Polys): each cell's point indices.
 inline void cell_block(std::string &out, const char *block, const std::vector<std::vector<long long>> &cells)
 {

@@ -43,10 +43,9 @@ std::string vtk_frame(const std::vector<VtkSide> &sides)
              [&](std::size_t k) { return std::array<double, 3>{points[k].r}; });
   data_array(out, "Float64", "force", 3, n,
              [&](std::size_t k) { return std::array<double, 3>{points[k].fx, points[k].fy, 0.0}; });
-  out += "      </PointData>\n      <Points>\n";
-  data_array(out, "Float64", "Points", 3, n,
-             [&](std::size_t k) { return std::array<double, 3>{points[k].x, points[k].y, 0.0}; });
-  out += "      </Points>\n";
+  vtk_series::points_block(out, n, [&](std::size_t k) {
+    return std::array<double, 3>{points[k].x, points[k].y, 0.0};
+  });
   std::vector<std::vector<long long>> vert_cells, line_cells;
   for (std::size_t v : verts) vert_cells.push_back({static_cast<long long>(v)});
   for (const auto &line : lines) {
@@ -56,7 +55,7 @@ std::string vtk_frame(const std::vector<VtkSide> &sides)
   }
   vtk_series::cell_block(out, "Verts", vert_cells);
   vtk_series::cell_block(out, "Lines", line_cells);
-  out += "    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  vtk_series::polydata_end(out);
   return out;
 }
 

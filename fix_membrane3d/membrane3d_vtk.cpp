@@ -35,12 +35,10 @@ std::string vtk_frame(const LateralSurface &membrane, const std::vector<Sphere> 
   data_array(out, "Float64", "radius", 1, n,
              [&](std::size_t k) { return std::array<double, 3>{points[k].r}; });
   data_array(out, "Float64", "load", 3, n, [&](std::size_t k) { return vec(points[k].load); });
-  out += "      </PointData>\n      <Points>\n";
-  data_array(out, "Float64", "Points", 3, n, [&](std::size_t k) { return vec(points[k].x); });
-  out += "      </Points>\n";
+  vtk_series::points_block(out, n, [&](std::size_t k) { return vec(points[k].x); });
   vtk_series::cell_block(out, "Verts", verts);
   vtk_series::cell_block(out, "Polys", polys);
-  out += "    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  vtk_series::polydata_end(out);
   return out;
 }
 
