@@ -14,6 +14,7 @@
 #include "allgather.h"
 #include "atom_faults.h"
 #include "style_args.h"
+#include "owned_atom.h"
 #include "style_error.h"
 #include "membrane_output.h"
 
@@ -32,8 +33,7 @@ membrane::LocalAtoms MembraneGather::local() const
 
 int MembraneGather::owned_index(AtomId tag) const
 {
-  const int i = atom->map(tag);
-  return i < atom->nlocal ? i : -1;
+  return ::owned_index(atom, tag);
 }
 
 void MembraneGather::allgather(double &bytes)

@@ -20,6 +20,7 @@
 #include "membrane3d_record.h"
 #include "membrane3d_skin.h"
 #include "membrane3d_tuning.h"
+#include "owned_atom.h"
 #include "membrane3d_vtk.h"
 #include "restart_envelope.h"
 
@@ -193,8 +194,8 @@ void FixMembrane3d::place_and_apply()
 
   double **f = atom->f;
   for (std::size_t k = 0; k < member_tags.size(); k++) {
-    const int i = atom->map(member_tags[k]);
-    if (i < 0 || i >= atom->nlocal) continue;
+    const int i = owned_index(atom, member_tags[k]);
+    if (i < 0) continue;
     for (int d = 0; d < 3; d++) f[i][d] += load[k][d];
   }
 

@@ -12,6 +12,7 @@
 #include "atom_faults.h"
 #include "membrane3d_messages.h"
 #include "style_error.h"
+#include "owned_atom.h"
 
 using namespace LAMMPS_NS;
 using membrane3d::GatheredSpheres;
@@ -80,9 +81,9 @@ std::size_t Membrane3dGather::tags(const std::vector<AtomId> &tags, GatheredSphe
   Atom *atom = lmp->atom;
   std::vector<double> send;
   for (AtomId tag : tags) {
-    const int i = tag <= atom->map_tag_max ? atom->map(tag) : -1;
-    // owned here, and the map not stale (the slot holds that atom)
-    if (i >= 0 && i < atom->nlocal && atom->tag[i] == tag && (atom->mask[i] & groupbit))
+    const int i = owned_index(atom, tag);
+    // the map not stale (the slot holds that atom), and still in the group
+    if (i >= 0 && atom->tag[i] == tag && (atom->mask[i] & groupbit))
       pack(atom, i, send);
   }
   share(*this, send, out);

@@ -2,6 +2,8 @@
 
 #include "atom.h"
 
+#include "owned_atom.h"
+
 void FrictionlessAtoms::set_all_copies(AtomId tag, int type)
 {
   if (tag > atom->map_tag_max) return;
@@ -38,8 +40,8 @@ void FrictionlessAtoms::restore_for_restart()
   restored_.assign(nlocal, 0);
   if (!applied_) return;
   for (const auto &on : own_type_) {
-    const int i = on.first <= atom->map_tag_max ? atom->map(on.first) : -1;
-    if (i < 0 || i >= nlocal || atom->type[i] != type_) continue;
+    const int i = owned_index(atom, on.first);
+    if (i < 0 || atom->type[i] != type_) continue;
     atom->type[i] = on.second;
     restored_[i] = 1;
   }
