@@ -101,12 +101,12 @@ void same_on_every_rank(LAMMPS *lmp, const std::string &prefix,
                         const ScalarInput *const (&inputs)[3], const char *const (&names)[3],
                         double (&v)[3], bool &warned)
 {
-  double lo[3], hi[3];
-  MPI_Allreduce(v, lo, 3, MPI_DOUBLE, MPI_MIN, lmp->world);
-  MPI_Allreduce(v, hi, 3, MPI_DOUBLE, MPI_MAX, lmp->world);
+  // the largest of v and of -v in one reduction (this runs at every step)
+  double mine[6] = {v[0], v[1], v[2], -v[0], -v[1], -v[2]}, most[6];
+  MPI_Allreduce(mine, most, 6, MPI_DOUBLE, MPI_MAX, lmp->world);
   MPI_Bcast(v, 3, MPI_DOUBLE, 0, lmp->world);
   for (int k = 0; k < 3; k++) {
-    const double spread = hi[k] - lo[k];
+    const double spread = most[k] + most[k + 3]; // largest minus smallest
     if (warned || !(spread > 1e-12 * std::fabs(v[k]))) continue;
     warned = true;
     style_warning(lmp, prefix,
