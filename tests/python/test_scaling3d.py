@@ -154,6 +154,17 @@ class Model(unittest.TestCase):
         self.assertEqual(len(lines), 2 + 3 * len(scaling.NETWORKS))
         self.assertIn("proportional to N", text)
 
+    def test_the_split_grows_as_the_time_on_one_rank(self):
+        rows = rows_one_size()
+        for r in rows_one_size():
+            rows.append(dict(r, spheres=16000, fix_ms_per_step=2 * r["fix_ms_per_step"]))
+        c = scaling3d.model_inputs(rows, 1e6)["cases"]["placed"]
+        # 2 -> 4 ms from 4000 to 16000 spheres: N^0.5, 4 ms x 62.5^0.5 = 31.62 ms at 1e6;
+        # at 16000, 4 ms on 1 rank and 3 on 2: s = 2 x 3 - 4 = 2 ms, q = 2 ms
+        self.assertAlmostEqual(c["k"], 0.5)
+        self.assertAlmostEqual(c["s"], 2e-3 * math.sqrt(62.5))
+        self.assertAlmostEqual(c["q"], 2e-3 * math.sqrt(62.5))
+
     def test_model_needs_both_rank_counts(self):
         self.assertIsNone(scaling3d.model_inputs([r for r in rows_one_size() if r["ranks"] == 1], 1e6))
 

@@ -311,14 +311,16 @@ def model_inputs(rows, n_model):
                volume_per_sphere=w2["lx_m"] * w2["ly_m"] * w2["h_m"] / big,
                ghosts_per_m2=w2["ghosts_per_rank"] / (w2["ly_m"] * w2["h_m"]), cases={})
     for case in MEMBRANE_CASES:
-        t = {}
-        for np_ in (1, 2):
-            t[np_], t["k%d" % np_] = power_law([(n, 1e-3 * at[n, np_, case]["fix_ms_per_step"]) for n in sizes], n_model)
+        # the split at the largest size, both parts grown as the time on 1 rank grows
+        # (the 1-rank times are the steadier on a shared machine)
+        t1, k = power_law([(n, 1e-3 * at[n, 1, case]["fix_ms_per_step"]) for n in sizes], n_model)
+        s, q = amdahl(1e-3 * at[big, 1, case]["fix_ms_per_step"], 1e-3 * at[big, 2, case]["fix_ms_per_step"])
         r2 = at[big, 2, case]
         kb_step, k_step = power_law([(n, at[n, 2, case]["kb_per_step"]) for n in sizes], n_model)
         kb_det, k_det = power_law([(n, at[n, 2, case]["kb_per_detection"]) for n in sizes], n_model)
-        s, q = amdahl(t[1], t[2])
-        out["cases"][case] = dict(s=s, q=q, k1=t["k1"], k2=t["k2"], k_step=k_step, k_det=k_det,
+        share = s / (s + q) if s + q > 0 else 1.0
+        out["cases"][case] = dict(s=t1 * share, q=t1 * (1 - share), k=k, s_big=s, q_big=q,
+                                  k_step=k_step, k_det=k_det,
                                   bytes=1e3 * kb_step + r2["detections_per_1000"] / 1000 * 1e3 * kb_det)
     return out
 
@@ -344,17 +346,18 @@ def model(rows, n_model):
                 cells.append(f"{100 * e_mem:.0f} % ({1e3 * t_mem:.3g} ms)")
             lines.append(f"| {net} | {p} | {n_model / p:.0f} | {1e3 * t_calc:.3g} / {1e3 * t_halo:.2g} / "
                          f"{1e3 * t_coll:.2g} | {100 * e_walls:.0f} % | " + " | ".join(cells) + " |")
-    fits = "; ".join(f"{CASE_TITLES[c]}: s {1e3 * v['s']:.3g} ms, q {1e3 * v['q']:.3g} ms (N^{v['k1']:.2f} on 1 "
-                     f"rank, N^{v['k2']:.2f} on 2), {v['bytes'] / 1e3:.3g} kB per step (N^{v['k_step']:.2f}, "
-                     f"per detection N^{v['k_det']:.2f})" for c, v in m["cases"].items())
+    fits = "; ".join(f"{CASE_TITLES[c]}: s {1e3 * v['s']:.3g} ms, q {1e3 * v['q']:.3g} ms ({1e3 * v['s_big']:.3g} "
+                     f"and {1e3 * v['q_big']:.3g} ms measured, x N^{v['k']:.2f}), {v['bytes'] / 1e3:.3g} kB per "
+                     f"step (N^{v['k_step']:.2f}, per detection N^{v['k_det']:.2f})" for c, v in m["cases"].items())
     text = (f"Assumed: {n_model:.3g} spheres; the walls' work of a step, {1e3 * m['work_s'] / n_model * 1e3:.3g} "
             f"us per sphere-step (rank 0's CPU time, 1 rank, {m['spheres']} spheres), divides evenly over P "
             f"ranks; each rank a cube of the sample ({m['volume_per_sphere'] * 1e9:.3g} mm^3 per sphere) with "
             f"{HALO_MESSAGES_3D} neighbours and {m['ghosts_per_m2']:.3g} ghosts per m^2 of face (measured "
             "between 2 ranks), 72 bytes each per step; bench/scaling.py's collectives; each membrane "
             f"adds {MEMBRANE_COLLECTIVES_3D} collectives and its own time t(P) = s + q / P, s the part every "
-            "rank repeats and q the part the ranks divide (from its time on 1 and 2 ranks), and the bytes "
-            "a rank receives (2 ranks, taken as independent of P), each extrapolated from the "
+            "rank repeats and q the part the ranks divide (from its time on 1 and 2 ranks at the largest "
+            "size, both grown as its time on 1 rank grows), and the bytes a rank receives (2 ranks, "
+            "taken as independent of P), each extrapolated from the "
             f"{'two largest sizes' if m['sizes'] > 1 else 'largest size (proportional to N)'} as a power "
             f"of N: {fits}. In parentheses: the membrane's time per step at P. Not modelled: load "
             "imbalance, contention, the meshes' own parallel bookkeeping, I/O.")
@@ -363,32 +366,31 @@ def model(rows, n_model):
 
 def estimate_minutes(rows, tiles, args):
     """Minutes of a run of bench/scaling3d.py over `tiles` with the same options, from
-    the measured rows: each process's steps at the time per step of its case on 1 rank
-    (the faster of wall and CPU time; the hold at every 50's) and its other seconds (start,
-    restart, first detection) in proportion to N, each extrapolated as a power of N over
-    the two largest sizes; the settling at the walls' time per step."""
+    the measured rows: each process's steps at the wall time per step of its case and
+    rank count (the hold at every 50's) and its other seconds (start, restart, first
+    detection: the process's seconds less its steps') in proportion to N, each
+    extrapolated as a power of N over the two largest sizes; the settling on the most
+    ranks at the walls' time per step."""
     base_n = min(r["spheres"] for r in rows)
-    one = sorted((r for r in rows if r["ranks"] == 1), key=lambda r: r["spheres"])
-    ms = {c: [(r["spheres"], min(r["wall_ms"], r["cpu_ms"]) / 1e3) for r in one if r["case"] == c]
-          for c, _, _ in CASES}
+    most = max(r["ranks"] for r in rows)
     total = 0.0
-    for r in rows:
-        t = tiles_list(r["tiles"])[0]
-        hold = ms["walls" if r["case"] == "walls" else "every50"]
-        r["overhead_s"] = max(0.0, r["run_s"] - steps_for(t, args.nhold, args.min_steps) * dict(hold)[r["spheres"]]
-                              - args.repeat * r["steps"] * dict(ms[r["case"]])[r["spheres"]])
     for np_ in sorted({r["ranks"] for r in rows}):
+        sel = sorted((r for r in rows if r["ranks"] == np_), key=lambda r: r["spheres"])
+        ms = {c: [(r["spheres"], r["wall_ms"] / 1e3) for r in sel if r["case"] == c] for c, _, _ in CASES}
         for case, _, _ in CASES:
-            over = [(r["spheres"], r["overhead_s"]) for r in one if r["case"] == case]
+            hold = ms["walls" if case == "walls" else "every50"]
+            over = []
+            for r in (r for r in sel if r["case"] == case):
+                steps = steps_for(tiles_list(r["tiles"])[0], args.nhold, args.min_steps)
+                over.append((r["spheres"], max(0.0, r["run_s"] - steps * dict(hold)[r["spheres"]]
+                                                - args.repeat * r["steps"] * dict(ms[case])[r["spheres"]])))
             for t in tiles:
                 n = base_n * t[0] * t[1] * t[2]
-                hold = power_law(ms["walls" if case == "walls" else "every50"], n)[0]
                 step = power_law(ms[case], n)[0]
-                process = (steps_for(t, args.nhold, args.min_steps) * hold
-                           + args.repeat * steps_for(t, args.nsteps, args.min_steps) * step
-                           + over[-1][1] * n / over[-1][0])
-                total += args.rounds * process
-                if case == "walls" and np_ == max(r["ranks"] for r in rows) and t != (1, 1, 1):
+                total += args.rounds * (steps_for(t, args.nhold, args.min_steps) * power_law(hold, n)[0]
+                                        + args.repeat * steps_for(t, args.nsteps, args.min_steps) * step
+                                        + over[-1][1] * n / over[-1][0])
+                if case == "walls" and np_ == most and t != (1, 1, 1):
                     total += args.nsettle * step
     return total / 60
 
