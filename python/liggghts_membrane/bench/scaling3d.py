@@ -440,8 +440,8 @@ def report(prefix):
              ("kB per rank per step / per detection", "kb"),
              ("peak MB per rank: walls / membrane (difference)", "mb")]
     out = ["# fix membrane3d: scaling with the sample and the rank count", "",
-           f"`{ctx['command']}` ({ctx['minutes']:.0f} min on {ctx['cores']} cores, others' runs "
-           f"beside it). The cuboid sample of examples/triaxial (seed {SEED}) tiled nx x ny x nz "
+           f"`{ctx['command']}` ({ctx['minutes']:.0f} min on {ctx['cores']} cores). "
+           f"The cuboid sample of examples/triaxial (seed {SEED}) tiled nx x ny x nz "
            f"(tiled samples settled {ctx['nsettle']} steps); each lateral boundary in its own process: "
            f"{ctx['nhold']} steps held, then {ctx['repeat']} timed run(s) of {ctx['nsteps']} steps, both "
            f"divided by the tiles (at least {ctx['min_steps']}), the platen still; "
@@ -464,8 +464,10 @@ def report(prefix):
            "", "Targets of issue 34: every auto <= x1.10 at 4 k and >= 32 k spheres on 1 and 2 "
            "ranks; a detection on 2 ranks <= 0.6 x its time on 1 rank and flat per membrane sphere "
            "from 4 k to >= 500 k; <= 2 MB per 10 k membrane spheres per rank beyond the walls'.", ""]
-    if ctx.get("estimate"):
-        out += [ctx["estimate"], ""]
+    # what the run step cannot know (the code measured, the machine's load): PREFIX.json's note
+    for key in ("estimate", "note"):
+        if ctx.get(key):
+            out += [ctx[key], ""]
     lines, text = model(rows, ctx["model_spheres"])
     out += ["## Beyond two cores: a model", ""] + lines + ["", text, ""]
     return "\n".join(out)
