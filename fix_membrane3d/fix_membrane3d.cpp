@@ -59,6 +59,7 @@ void FixMembrane3d::setup_pre_force(int vflag)
 {
   // the group changed between two runs: its member IDs may name other spheres now
   if (!group_as_remembered()) member_tags.clear();
+  traffic.start(update->ntimestep, detections);
   pre_force(vflag);
 }
 
@@ -74,14 +75,17 @@ void FixMembrane3d::post_run()
 {
   types.restore();
   remember_group(group_checksum());
+  traffic.report(lmp, prefix, id, update->ntimestep, detections);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixMembrane3d::pre_force(int)
 {
+  const ScopedSeconds timing(traffic.fix_seconds);
   evaluate_inputs();
   if (on_any_rank(detection_due())) {
+    const Membrane3dTraffic::Detection timed(traffic);
     detect();
     return;
   }
@@ -96,7 +100,7 @@ void FixMembrane3d::pre_force(int)
 // Each gather stops the run on an atom that is unusable or not between the platens.
 Membrane3dGather FixMembrane3d::gather() const
 {
-  return {lmp, prefix, groupbit, platens};
+  return {lmp, prefix, groupbit, platens, &traffic.received};
 }
 
 // This rank's view (on_any_rank makes it every rank's); when not due, `members`
@@ -120,6 +124,7 @@ bool FixMembrane3d::detection_due()
 
 void FixMembrane3d::post_force(int)
 {
+  const ScopedSeconds timing(traffic.fix_seconds);
   place_and_apply(); // the positions gathered in pre_force: they do not move in between
 }
 
