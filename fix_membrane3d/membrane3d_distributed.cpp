@@ -64,6 +64,21 @@ bool holds(const std::vector<AtomId> &sorted, AtomId tag)
   return std::binary_search(sorted.begin(), sorted.end(), tag);
 }
 
+// a and b (each sorted by ID, no ID in both) in one, sorted by ID
+void merge(const GatheredSpheres &a, const GatheredSpheres &b, GatheredSpheres &out)
+{
+  out = GatheredSpheres();
+  std::size_t i = 0, j = 0;
+  while (i < a.tags.size() || j < b.tags.size()) {
+    const bool from_a = j == b.tags.size() || (i < a.tags.size() && a.tags[i] < b.tags[j]);
+    const GatheredSpheres &g = from_a ? a : b;
+    const std::size_t k = from_a ? i++ : j++;
+    out.tags.push_back(g.tags[k]);
+    out.spheres.push_back(g.spheres[k]);
+    out.types.push_back(g.types[k]);
+  }
+}
+
 } // namespace
 
 MembraneTopology detect_distributed(const Membrane3dGather &gather,
@@ -94,10 +109,12 @@ MembraneTopology detect_distributed(const Membrane3dGather &gather,
       counters.doublings += 1;
     }
     const std::vector<char> near = near_seeds(own.spheres, seeds.spheres, totals.r_max, thickness);
+    // the seeds are in the skin (each at a gap -2 r from itself): every rank has them
     std::vector<int> kept;
     std::vector<Sphere> left;
     std::vector<AtomId> left_tags;
     for (std::size_t k = 0; k < own.spheres.size(); ++k) {
+      if (holds(seeds.tags, own.tags[k])) continue;
       if (near[k] || holds(joined, own.tags[k])) {
         kept.push_back(own.index[k]);
       } else {
@@ -105,7 +122,9 @@ MembraneTopology detect_distributed(const Membrane3dGather &gather,
         left_tags.push_back(own.tags[k]);
       }
     }
-    counted.some(kept, skin);
+    GatheredSpheres rest;
+    counted.some(kept, rest);
+    merge(seeds, rest, skin);
     counters.last_skin = static_cast<double>(skin.tags.size());
     const Mirrored m = mirror_in_band(skin.spheres, gather.platens, band);
     if (skin.tags.size() == n_group) { // nothing left out: the flood of all of them
