@@ -5,50 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace membrane3d {
-
-std::vector<char> near_seeds(const std::vector<Sphere> &mine, const std::vector<Sphere> &seeds,
-                             double r_max, double thickness)
-{
-  if (!std::isfinite(thickness) || !std::isfinite(r_max))
-    throw std::invalid_argument("skin thickness " + number_text(thickness) + ", largest radius " +
-                                number_text(r_max) + ": must be finite");
-  std::vector<char> near(mine.size(), 0);
-  double seed_r = 0;
-  for (const Sphere &s : seeds) seed_r = std::max(seed_r, s.r);
-  // cubes no narrower than any reach: a sphere near a seed is in its cube or the next
-  const double side = std::max(r_max + seed_r + thickness, 1e-300);
-  const auto cube = [side](const Eigen::Vector3d &x, int d) {
-    return static_cast<std::int64_t>(std::floor(x[d] / side));
-  };
-  const auto key = [](std::int64_t a, std::int64_t b, std::int64_t c) {
-    return (a * 73856093) ^ (b * 19349663) ^ (c * 83492791);
-  };
-  std::unordered_multimap<std::int64_t, int> grid;
-  grid.reserve(seeds.size());
-  for (std::size_t k = 0; k < seeds.size(); ++k)
-    grid.emplace(key(cube(seeds[k].x, 0), cube(seeds[k].x, 1), cube(seeds[k].x, 2)),
-                 static_cast<int>(k));
-  for (std::size_t i = 0; i < mine.size(); ++i) {
-    const Eigen::Vector3d &x = mine[i].x;
-    const std::int64_t a = cube(x, 0), b = cube(x, 1), c = cube(x, 2);
-    for (std::int64_t da = -1; da <= 1 && !near[i]; ++da)
-      for (std::int64_t db = -1; db <= 1 && !near[i]; ++db)
-        for (std::int64_t dc = -1; dc <= 1 && !near[i]; ++dc) {
-          const auto range = grid.equal_range(key(a + da, b + db, c + dc));
-          for (auto it = range.first; it != range.second && !near[i]; ++it) {
-            const Sphere &s = seeds[it->second];
-            // the same test as spheres_near's (a colliding key only costs a test)
-            if ((x - s.x).norm() - mine[i].r - s.r <= thickness) near[i] = 1;
-          }
-        }
-  }
-  return near;
-}
 
 OutermostBins::OutermostBins(const Eigen::Vector2d &axis_, double z_lo_, double z_hi,
                              double outer, double diameter_)

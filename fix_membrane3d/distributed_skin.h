@@ -1,6 +1,7 @@
 // The parts of fix membrane3d's distributed detection (membrane3d_distributed.h) that
-// each rank computes on its own spheres: which are near the seeds, the bins of the
-// outermost spheres, and the counters of the rounds. No LIGGGHTS here: unit-tested in
+// each rank computes on its own spheres: the bins of the outermost spheres, and the
+// counters of the rounds (which of its spheres are near the seeds: near_seeds,
+// skin_flood.h). No LIGGGHTS here: unit-tested in
 // tests/unit/membrane3d.
 #ifndef LIGGGHTS_MEMBRANE_DISTRIBUTED_SKIN_H
 #define LIGGGHTS_MEMBRANE_DISTRIBUTED_SKIN_H
@@ -11,14 +12,9 @@
 #include <vector>
 
 #include "exterior_flood.h"
+#include "skin_flood.h"
 
 namespace membrane3d {
-
-// Which of `mine` have a gap of at most `thickness` to one of the `seeds` (the test of
-// spheres_near, skin_flood.h); r_max: at least every radius of `mine`. Throws
-// std::invalid_argument for a thickness or r_max not finite.
-std::vector<char> near_seeds(const std::vector<Sphere> &mine, const std::vector<Sphere> &seeds,
-                             double r_max, double thickness);
 
 // The bins of outermost_spheres (skin_flood.h), computed from reduced values so that
 // every rank has the same: slabs `diameter` high from z_lo, sectors about `diameter`

@@ -108,7 +108,7 @@ MembraneTopology detect_distributed(const Membrane3dGather &gather,
       thickness *= 2;
       counters.doublings += 1;
     }
-    const std::vector<char> near = near_seeds(own.spheres, seeds.spheres, totals.r_max, thickness);
+    const std::vector<char> near = near_seeds(own.spheres, seeds.spheres, thickness);
     // the seeds are in the skin (each at a gap -2 r from itself): every rank has them
     std::vector<int> kept;
     std::vector<Sphere> left;

@@ -315,6 +315,36 @@ Boundary SkinShell::boundary() const
   return impl_->flood->boundary(nullptr);
 }
 
+std::vector<char> near_seeds(const std::vector<Sphere> &mine, const std::vector<Sphere> &seeds,
+                             double thickness)
+{
+  if (!std::isfinite(thickness))
+    throw std::invalid_argument("skin thickness " + number_text(thickness) +
+                                ": must be finite");
+  std::vector<char> near(mine.size(), 0);
+  if (seeds.empty()) return near;
+  double seed_r = 0;
+  for (const Sphere &s : seeds) seed_r = std::max(seed_r, s.r);
+  std::vector<int> all(seeds.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const SphereGrid grid(seeds, all, std::max(2 * seed_r + thickness, 1e-9 * seed_r));
+  Eigen::Vector3d lo = seeds[0].x, hi = lo;
+  for (const Sphere &s : seeds) {
+    lo = lo.cwiseMin(s.x);
+    hi = hi.cwiseMax(s.x);
+  }
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    const Sphere &m = mine[i];
+    const double reach = m.r + seed_r + thickness;
+    const Eigen::Vector3d x = m.x;
+    if ((x.array() < lo.array() - reach).any() || (x.array() > hi.array() + reach).any()) continue;
+    grid.for_each_within(x, reach, [&](int k) {
+      if (!near[i] && (seeds[k].x - x).norm() - m.r - seeds[k].r <= thickness) near[i] = 1;
+    });
+  }
+  return near;
+}
+
 bool skin_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                    double tolerance, const std::vector<char> &keep, Boundary &out)
 {

@@ -34,6 +34,12 @@ namespace membrane3d {
 std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::vector<int> &seeds,
                                double thickness);
 
+// Which of `mine` have a gap of at most `thickness` to one of the `seeds` (the test of
+// spheres_near, for spheres and seeds given apart: a rank's own spheres, the seeds
+// gathered from all). Throws std::invalid_argument for a thickness not finite.
+std::vector<char> near_seeds(const std::vector<Sphere> &mine, const std::vector<Sphere> &seeds,
+                             double thickness);
+
 // Seeds for a detection with no last membrane to start from (a run's first): the
 // outermost spheres around the sample's axis (through the centroid of the centres, along
 // z). Around the axis the sample is cut into sectors about `diameter` wide at its

@@ -142,7 +142,7 @@ TEST(DistributedSkin, SkinMirroredWithTheGroupsBandIsTheMembrane)
   const double band = membrane3d::image_band(r_max, kTolerance);
   std::vector<Sphere> seed_spheres;
   for (int k : seeds) seed_spheres.push_back(s[k]);
-  std::vector<char> keep = membrane3d::near_seeds(s, seed_spheres, r_max, 1.0);
+  std::vector<char> keep = membrane3d::near_seeds(s, seed_spheres, 1.0);
   ASSERT_EQ(keep.back(), 0);
   for (int round = 0; round < 2; ++round) {
     std::vector<Sphere> skin, left[2];
@@ -201,10 +201,19 @@ TEST(DistributedSkin, NearSeedsIsSpheresNear)
   for (int k : seeds) seed_spheres.push_back(s[k]);
   for (double thickness : {0.05, 0.7, 2.5}) {
     const std::vector<char> expected = membrane3d::spheres_near(s, seeds, thickness);
-    EXPECT_EQ(membrane3d::near_seeds(s, seed_spheres, 0.5, thickness), expected)
+    EXPECT_EQ(membrane3d::near_seeds(s, seed_spheres, thickness), expected)
         << "thickness " << thickness;
   }
-  EXPECT_THROW(membrane3d::near_seeds(s, seed_spheres, 0.5, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(membrane3d::near_seeds(s, seed_spheres, std::nan("")), std::invalid_argument);
+  // a sphere far beyond the seeds, a seed far from the others: near only to itself
+  std::vector<Sphere> far = s;
+  far.push_back({Vector3d(100, 3, 3), 0.5});
+  seed_spheres.push_back(far.back());
+  const std::vector<char> near = membrane3d::near_seeds(far, seed_spheres, 0.7);
+  EXPECT_EQ(near.back(), 1);
+  EXPECT_EQ(std::vector<char>(near.begin(), near.end() - 1),
+            membrane3d::spheres_near(s, seeds, 0.7));
+  EXPECT_EQ(membrane3d::near_seeds(s, {}, 0.7), std::vector<char>(s.size(), 0));
 }
 
 // The bins of the collective outermost spheres are outermost_spheres' bins: with every
