@@ -5,8 +5,9 @@
 // 1. Seeds: the last members (their atoms gathered); at a run's first detection the
 //    outermost spheres, found collectively (outermost_spheres of skin_flood.h: the axis
 //    from a sum, each bin's farthest reach from a reduction, each rank picking its own).
-//    Any seeds are safe, since the certificate decides: the round-off of the axis,
-//    which depends on the number of ranks, can change the skin but never the membrane.
+//    Any seeds are safe, since the certificate decides: the round-off of the axis and
+//    of the mean diameter (the skin's thickness, the bins' size), sums over the ranks
+//    whose last bits depend on their number, can change the skin, never the membrane.
 // 2. The skin: each rank's own atoms of the group within the skin's thickness of a
 //    seed, gathered to every rank sorted by ID (as all the atoms were before), mirrored
 //    with the band of the whole group (its largest radius, reduced).
