@@ -275,3 +275,39 @@ TEST(DistributedSkin, SkinThatShowsNothingFailsEverySphere)
 }
 
 } // namespace
+
+namespace {
+
+// The note at a run's end: nothing when every certificate held at once; the counts of
+// the run (the counters less those at its start) otherwise.
+TEST(DistributedSkin, RunNoteSaysWhatFailed)
+{
+  membrane3d::SkinCounters start, end;
+  start.detections = 3;
+  start.rounds = 1;
+  start.joined = 2;
+  start.bytes = 100;
+  end = start;
+  end.detections = 10;
+  EXPECT_EQ(membrane3d::skin_run_note(end - start), "");
+  end.rounds = 2;
+  end.joined = 6;
+  EXPECT_EQ(membrane3d::skin_run_note(end - start),
+            "of the run's 7 detections from the skin, 1 certificate failed and was made again "
+            "with the 4 left-out spheres that failed joining the skin");
+  end.rounds = 9;
+  end.doublings = 1;
+  end.last_resorts = 1;
+  EXPECT_EQ(membrane3d::skin_run_note(end - start),
+            "of the run's 7 detections from the skin, 8 certificates failed and were made "
+            "again with the 4 left-out spheres that failed joining the skin (its thickness "
+            "doubled 1 time); 1 detection gathered all the group's spheres (the last resort)");
+  end = start;
+  end.detections = 4;
+  end.last_resorts = 1;
+  EXPECT_EQ(membrane3d::skin_run_note(end - start),
+            "of the run's 1 detection from the skin, 1 detection gathered all the group's "
+            "spheres (the last resort)");
+}
+
+} // namespace
