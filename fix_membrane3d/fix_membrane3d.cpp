@@ -1,24 +1,28 @@
 /* ----------------------------------------------------------------------
    fix membrane3d: see fix_membrane3d.h and doc/fix_membrane3d.md
 
-   Every rank gathers the same spheres in the same order (membrane3d_gather.h)
-   and computes the same membrane and loads, so neither depends on the number
+   A detection is made from a skin of the spheres that every rank gathers alike,
+   certified by each rank on its own spheres (membrane3d_distributed.h); the
+   members are gathered in the same order on every rank (membrane3d_gather.h),
+   which compute the same membrane and loads, so neither depends on the number
    of ranks or the processor grid; loads are added to owned atoms only.
 ------------------------------------------------------------------------- */
 
 #include "fix_membrane3d.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "group.h"
 #include "update.h"
 
 #include "membrane3d_messages.h"
 #include "membrane3d_record.h"
-#include "membrane3d_skin.h"
+#include "membrane3d_distributed.h"
 #include "membrane3d_tuning.h"
 #include "owned_atom.h"
 #include "membrane3d_vtk.h"
@@ -66,6 +70,7 @@ void FixMembrane3d::setup_pre_force(int vflag)
 void FixMembrane3d::setup(int vflag)
 {
   warned_rim = warned_moved = false;
+  skin_at_setup = skin_counters;
   post_force(vflag);
 }
 
@@ -73,6 +78,12 @@ void FixMembrane3d::setup(int vflag)
 // unfix or a run without this fix see the true sample)
 void FixMembrane3d::post_run()
 {
+  // the skin's certificates failed or its last resort was taken: said on rank 0
+  const std::string note = membrane3d::skin_run_note(skin_counters - skin_at_setup);
+  if (!note.empty() && comm->me == 0) {
+    if (screen) std::fprintf(screen, "%s%s\n", prefix.c_str(), note.c_str());
+    if (logfile) std::fprintf(logfile, "%s%s\n", prefix.c_str(), note.c_str());
+  }
   types.restore();
   remember_group(group_checksum());
   traffic.report(lmp, prefix, id, update->ntimestep, detections);
@@ -144,20 +155,36 @@ void FixMembrane3d::wear_types(const GatheredSpheres &g)
   types.wear(on_tags, on_types);
 }
 
+// every auto's watch is built from all the group's spheres; any other detection is
+// made from a skin (membrane3d_distributed.h). `found` gets the spheres it was made
+// from, sorted by ID: the members among them.
 void FixMembrane3d::detect()
 {
-  GatheredSpheres all;
-  gather().group(all);
-  const std::string few =
-      membrane3d::too_few_spheres(group->names[igroup], all.spheres.size(), update->ntimestep);
+  const bigint step = update->ntimestep;
+  const bool watch = shared.automatic() && automatic.builds_watch(step);
+  GatheredSpheres found;
+  Membrane3dGather::Totals totals;
+  if (watch) {
+    gather().group(found);
+    totals.atoms = static_cast<double>(found.spheres.size());
+  } else {
+    totals = gather().totals();
+  }
+  const std::string few = membrane3d::too_few_spheres(
+      group->names[igroup], static_cast<std::size_t>(totals.atoms), step);
   if (!few.empty()) fail(few);
   std::vector<int> index;
   try {
-    topology = membrane3d::members_only(
-        shared.automatic()
-            ? automatic.detect(all, member_tags, platens, tolerance, d50, update->ntimestep)
-            : membrane3d::detect_near_members(all, member_tags, platens, tolerance),
-        index);
+    if (watch) {
+      topology = membrane3d::members_only(
+          automatic.detect(found, member_tags, platens, tolerance, d50, step), index);
+    } else {
+      if (shared.automatic()) automatic.unwatched(platens);
+      const membrane3d::MembraneTopology of_skin = membrane3d::detect_distributed(
+          gather(), member_tags, tolerance, totals, found, skin_counters);
+      traffic.received += skin_counters.last_bytes; // its gathers count them there
+      topology = membrane3d::members_only(of_skin, index);
+    }
     if (shared.automatic()) automatic.set_members(index);
   } catch (const membrane3d::FlatSample &e) {
     fail(std::string(e.what()) +
@@ -166,11 +193,11 @@ void FixMembrane3d::detect()
     fail(std::string(e.what()) + "; the group must be one packing whose spheres are linked "
                                  "(gaps within the tolerance)");
   }
-  members = membrane3d::subset(all, index);
+  members = membrane3d::subset(found, index);
   member_tags = members.tags;
   detected_at = members.spheres;
-  wear_types(all);
-  last_detection = update->ntimestep;
+  wear_types(found);
+  last_detection = step;
   detected_platens = platens;
   detections += 1.0;
   check_ranks_agree(lmp, prefix, member_tags, topology.facets.size());

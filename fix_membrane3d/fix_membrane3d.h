@@ -26,6 +26,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include <cstdio>
 #include <vector>
 
+#include "distributed_skin.h"
 #include "gathered_spheres.h"
 #include "lateral_surface.h"
 #include "membrane3d_auto.h"
@@ -69,7 +70,11 @@ class FixMembrane3d : public MembraneFix {
   void restart(char *) override;
   double memory_usage() override;
 
+  // the detections from a skin: rounds, last resorts, bytes gathered (for the benchmarks)
+  membrane3d::SkinCounters skin_counters;
+
  private:
+  membrane3d::SkinCounters skin_at_setup; // skin_counters at this run's setup
   membrane3d::Membrane3dAuto automatic; // every auto
 
   // the last detection: its topology over the member atoms, their IDs, its step
