@@ -1,0 +1,413 @@
+#include "kinetic_flood.h"
+
+#include "kinetic_triangulation.h"
+#include "power_flood.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace membrane3d {
+
+using kinetic::Cell;
+using kinetic::Vertex;
+
+namespace {
+
+// exterior_flood.cpp's test of a flat sample, to throw what exterior_boundary throws.
+constexpr double kFlatRms = 0.1;
+
+// The triangulation is made anew rather than repaired when the spheres to remove and
+// insert again are more than this share of all: removing and inserting a sphere costs
+// some 4 times its share of a triangulation.
+constexpr double kRebuildShare = 4.0;
+
+// exterior_boundary's own message for a flat sample
+[[noreturn]] void flat(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed)
+{
+  exterior_boundary(spheres, sealed, 0.0);
+  throw FlatSample("the spheres enclose no volume for a membrane to wrap");
+}
+
+void check_not_flat(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double r = 0;
+  for (const Sphere &s : spheres) {
+    mean += s.x;
+    r += s.r;
+  }
+  const double n = static_cast<double>(spheres.size());
+  mean /= n;
+  r /= n;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Sphere &s : spheres) covariance += (s.x - mean) * (s.x - mean).transpose() / n;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance, Eigen::EigenvaluesOnly);
+  const double limit = kFlatRms * kFlatRms * r * r;
+  if (eigen.eigenvalues()[0] > limit) return;
+  flat(spheres, sealed);
+}
+
+} // namespace
+
+struct KineticFlood::Impl {
+  std::vector<bool> sealed;
+  double tolerance, budget;
+  std::vector<Sphere> now, reference, held; // held: where the triangulation is regular
+  std::vector<long> moved;                  // per sphere: the step it took a new reference
+  std::vector<Vertex> vertex;               // per sphere, null when hidden
+  kinetic::Triangulation t;
+  KineticStats stats;
+  kinetic::Certifier certifier{t, reference, budget, stats};
+  long step = 0;
+  bool forgotten = false;
+  Boundary boundary;
+  std::vector<Cell> cells;
+  std::vector<char> flooded;
+
+  Impl(const std::vector<bool> &s, double tol, double b) : sealed(s), tolerance(tol), budget(b) {}
+
+  void hold(const std::vector<Sphere> &at)
+  {
+    for (const Vertex v : vertex)
+      if (v != Vertex()) v->set_point(kinetic::weighted_point(at[v->info()]));
+  }
+  void map_vertices();
+  void rebuild();
+  bool kinetic_step();
+  bool repair(std::vector<int> failed);
+  bool insert(int sphere, Vertex hint);
+  bool reveal_hidden();
+  void flood();
+
+  // the flood of exterior_flood.cpp (PowerFlood), over the kept triangulation
+  bool finite(Vertex v) const { return !t.is_infinite(v); }
+  bool linked(Vertex a, Vertex b) const;
+  bool wall(Cell c, int k) const;
+  bool all_sealed(Cell c) const;
+  bool ignored_facet(Cell c, int k) const;
+  void flood_from_outside();
+  void keep_largest_dry_group();
+  std::array<int, 3> outward_facet(Cell c, int k) const;
+  std::vector<Side> sides() const;
+};
+
+void KineticFlood::Impl::map_vertices()
+{
+  vertex.assign(now.size(), Vertex());
+  t.infinite_vertex()->info() = -1;
+  for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v) vertex[v->info()] = v;
+  stats.hidden = std::count(vertex.begin(), vertex.end(), Vertex());
+}
+
+void KineticFlood::Impl::rebuild()
+{
+  ++stats.rebuilds;
+  forgotten = false;
+  t.clear();
+  std::vector<std::pair<kinetic::K::Weighted_point_3, int>> points;
+  points.reserve(now.size());
+  for (std::size_t i = 0; i < now.size(); ++i)
+    points.emplace_back(kinetic::weighted_point(now[i]), static_cast<int>(i));
+  t.insert(points.begin(), points.end());
+  if (t.dimension() < 3) flat(now, sealed);
+  map_vertices();
+  reference = now;
+  held = now;
+  std::vector<int> failed;
+  // every certificate of the new triangulation holds (CGAL's): this finds their margins;
+  // one not decided here (a collinear hull facet): triangulate anew each step
+  if (!certifier.pass(++step, moved, failed) || !failed.empty()) forgotten = true;
+  stats.tight = certifier.tight();
+}
+
+// Inserts a sphere at its present position; false when CGAL did what is not followed
+// here (the sphere on another's centre).
+bool KineticFlood::Impl::insert(int i, Vertex hint)
+{
+  const std::size_t before = t.number_of_vertices();
+  const auto p = kinetic::weighted_point(now[i]);
+  kinetic::Triangulation::Locate_type lt;
+  int li, lj;
+  const Cell c = t.locate(p, lt, li, lj, hint == Vertex() ? Cell() : hint->cell());
+  if (lt == kinetic::Triangulation::VERTEX) return false; // on another's centre
+  const Vertex v = t.insert(p, lt, c, li, lj);
+  if (v == Vertex()) { // hidden
+    vertex[i] = Vertex();
+    return true;
+  }
+  if (t.number_of_vertices() != before + 1) {
+    v->info() = i;
+    map_vertices(); // it hid others
+    return true;
+  }
+  v->info() = i;
+  vertex[i] = v;
+  return true;
+}
+
+// The spheres of failed certificates that have moved since the last step are removed
+// (each failed certificate held at the last step's positions, so it has one), then
+// inserted at their present positions.
+bool KineticFlood::Impl::repair(std::vector<int> failed)
+{
+  std::vector<int> out; // removed, to insert again
+  while (!failed.empty()) {
+    std::sort(failed.begin(), failed.end());
+    failed.erase(std::unique(failed.begin(), failed.end()), failed.end());
+    failed.erase(
+        std::remove_if(failed.begin(), failed.end(),
+                       [this](int i) { return now[i].x == held[i].x && now[i].r == held[i].r; }),
+        failed.end());
+    if (failed.empty()) return false; // not so: not followed here
+    // most of the points: cheaper to triangulate anew
+    if (kRebuildShare * static_cast<double>(out.size() + failed.size()) > now.size()) return false;
+    hold(held); // where the triangulation is regular: CGAL may remove there
+    for (int i : failed) {
+      if (vertex[i] == Vertex()) continue;
+      t.remove(vertex[i]);
+      vertex[i] = Vertex();
+      out.push_back(i);
+    }
+    stats.removed += static_cast<long>(failed.size());
+    hold(now);
+    failed.clear();
+    // the cells the removals made, at the present positions
+    if (!certifier.pass(step, moved, failed)) return false;
+  }
+  Vertex hint;
+  for (int i : out) {
+    if (!insert(i, hint)) return false;
+    if (vertex[i] != Vertex()) hint = vertex[i];
+  }
+  std::vector<int> check;
+  // the inserted spheres' cells: regular by CGAL; their margins
+  if (!certifier.pass(step, moved, check)) return false;
+  return check.empty();
+}
+
+// A left-out sphere stays out while it conflicts with no cell: CGAL's insert decides.
+bool KineticFlood::Impl::reveal_hidden()
+{
+  bool revealed = false;
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    if (vertex[i] != Vertex()) continue;
+    if (!insert(static_cast<int>(i), Vertex())) return false;
+    revealed = revealed || vertex[i] != Vertex();
+  }
+  if (revealed) {
+    std::vector<int> check;
+    if (!certifier.pass(step, moved, check) || !check.empty()) return false;
+  }
+  stats.hidden = std::count(vertex.begin(), vertex.end(), Vertex());
+  return true;
+}
+
+bool KineticFlood::Impl::kinetic_step()
+{
+  ++step;
+  const double reach = budget * budget;
+  for (std::size_t i = 0; i < now.size(); ++i)
+    if (now[i].r != reference[i].r || (now[i].x - reference[i].x).squaredNorm() >= reach) {
+      reference[i] = now[i];
+      moved[i] = step;
+      ++stats.rereferenced;
+    }
+  hold(now);
+  std::vector<int> failed;
+  if (!certifier.pass(step, moved, failed)) return false;
+  if (!failed.empty() && !repair(std::move(failed))) return false;
+  if (!reveal_hidden()) return false;
+  stats.tight = certifier.tight();
+  held = now;
+  return true;
+}
+
+KineticFlood::KineticFlood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
+                           double tolerance, double budget)
+{
+  check_flood_input(spheres, sealed, tolerance);
+  if (!std::isfinite(budget) || !(budget > 0))
+    throw std::invalid_argument("kinetic flood budget " + std::to_string(budget) +
+                                ": must be a finite length > 0");
+  check_not_flat(spheres, sealed);
+  impl_ = std::make_unique<Impl>(sealed, tolerance, budget);
+  impl_->now = spheres;
+  impl_->moved.assign(spheres.size(), -1);
+  impl_->rebuild();
+  impl_->flood();
+}
+
+KineticFlood::~KineticFlood() = default;
+
+void KineticFlood::advance(const std::vector<Sphere> &now)
+{
+  Impl &m = *impl_;
+  if (now.size() != m.now.size())
+    throw std::invalid_argument("kinetic flood: " + std::to_string(now.size()) +
+                                " spheres where it has " + std::to_string(m.now.size()));
+  check_flood_input(now, m.sealed, m.tolerance);
+  check_not_flat(now, m.sealed);
+  m.now = now;
+  ++m.stats.steps;
+  if (m.forgotten || !m.kinetic_step()) m.rebuild();
+  m.flood();
+}
+
+const Boundary &KineticFlood::boundary() const
+{
+  return impl_->boundary;
+}
+
+const KineticStats &KineticFlood::stats() const
+{
+  return impl_->stats;
+}
+
+void KineticFlood::forget()
+{
+  impl_->forgotten = true;
+}
+
+// The flood of exterior_flood.cpp, line for line (PowerFlood), over the kept cells.
+void KineticFlood::Impl::flood()
+{
+  cells.clear();
+  for (auto c = t.all_cells_begin(); c != t.all_cells_end(); ++c) {
+    c->info().index = static_cast<int>(cells.size());
+    cells.push_back(c);
+  }
+  flooded.assign(cells.size(), 0);
+  flood_from_outside();
+  keep_largest_dry_group();
+  boundary.facets.clear();
+  for (Cell c : cells) {
+    if (flooded[c->info().index]) continue;
+    for (int k = 0; k < 4; ++k)
+      if (flooded[c->neighbor(k)->info().index] && !ignored_facet(c, k))
+        boundary.facets.push_back(outward_facet(c, k));
+  }
+  for (auto &f : boundary.facets)
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  std::sort(boundary.facets.begin(), boundary.facets.end());
+  boundary.side = sides();
+}
+
+bool KineticFlood::Impl::linked(Vertex a, Vertex b) const
+{
+  const bool across = sealed[a->info()] || sealed[b->info()];
+  const Sphere &p = now[a->info()], &q = now[b->info()];
+  return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance : tolerance);
+}
+
+bool KineticFlood::Impl::wall(Cell c, int k) const
+{
+  const Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3), d = c->vertex((k + 3) & 3);
+  return finite(a) && finite(b) && finite(d) && linked(a, b) && linked(b, d) && linked(a, d);
+}
+
+bool KineticFlood::Impl::all_sealed(Cell c) const
+{
+  for (int k = 0; k < 4; ++k) {
+    const Vertex v = c->vertex(k);
+    if (finite(v) && !sealed[v->info()]) return false;
+  }
+  return true;
+}
+
+bool KineticFlood::Impl::ignored_facet(Cell c, int k) const
+{
+  bool any_unsealed = false;
+  for (int j = 1; j < 4; ++j) {
+    const Vertex v = c->vertex((k + j) & 3);
+    if (!finite(v)) return true;
+    any_unsealed = any_unsealed || !sealed[v->info()];
+  }
+  return !any_unsealed;
+}
+
+void KineticFlood::Impl::flood_from_outside()
+{
+  std::vector<Cell> front;
+  for (Cell c : cells)
+    if (t.is_infinite(c) && !all_sealed(c)) {
+      flooded[c->info().index] = 1;
+      front.push_back(c);
+    }
+  while (!front.empty()) {
+    const Cell c = front.back();
+    front.pop_back();
+    for (int k = 0; k < 4; ++k) {
+      const Cell n = c->neighbor(k);
+      if (flooded[n->info().index] || all_sealed(n) || wall(c, k)) continue;
+      flooded[n->info().index] = 1;
+      front.push_back(n);
+    }
+  }
+}
+
+void KineticFlood::Impl::keep_largest_dry_group()
+{
+  std::vector<int> group(cells.size(), -1);
+  std::vector<long> size;
+  for (Cell seed : cells) {
+    if (flooded[seed->info().index] || group[seed->info().index] >= 0) continue;
+    const int g = static_cast<int>(size.size());
+    size.push_back(0);
+    std::vector<Cell> front{seed};
+    group[seed->info().index] = g;
+    while (!front.empty()) {
+      const Cell c = front.back();
+      front.pop_back();
+      if (!all_sealed(c)) ++size[g];
+      for (int k = 0; k < 4; ++k) {
+        const Cell n = c->neighbor(k);
+        if (flooded[n->info().index] || group[n->info().index] >= 0) continue;
+        group[n->info().index] = g;
+        front.push_back(n);
+      }
+    }
+  }
+  int keep = 0;
+  for (std::size_t g = 1; g < size.size(); ++g)
+    if (size[g] > size[keep]) keep = static_cast<int>(g);
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (!flooded[i] && group[i] != keep) flooded[i] = 1;
+}
+
+std::array<int, 3> KineticFlood::Impl::outward_facet(Cell c, int k) const
+{
+  Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3);
+  const Vertex d = c->vertex((k + 3) & 3), inner = c->vertex(k);
+  if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
+                        inner->point().point()) == CGAL::POSITIVE)
+    std::swap(a, b);
+  return {a->info(), b->info(), d->info()};
+}
+
+std::vector<Side> KineticFlood::Impl::sides() const
+{
+  std::vector<char> wet(now.size(), 0), dry(now.size(), 0);
+  for (Cell c : cells)
+    for (int k = 0; k < 4; ++k) {
+      const Vertex v = c->vertex(k);
+      if (!finite(v)) continue;
+      (flooded[c->info().index] ? wet : dry)[v->info()] = 1;
+    }
+  std::vector<Side> side(now.size(), Side::inside);
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    if (vertex[i] == Vertex()) {
+      const Cell c = t.locate(kinetic::weighted_point(now[i]));
+      side[i] = flooded[c->info().index] ? Side::outside : Side::inside;
+    } else if (wet[i]) {
+      side[i] = dry[i] ? Side::surface : Side::outside;
+    }
+  }
+  return side;
+}
+
+} // namespace membrane3d

@@ -1,0 +1,28 @@
+// Margins of the kinetic flood's certificates (kinetic_flood.h): whether the sign of a
+// predicate of the regular triangulation cannot change while each of its points moves
+// by less than a distance from where it is. No LIGGGHTS, no CGAL here.
+//
+// The bounds are those of flood_watch.cpp: the determinant's change is at most its
+// first-order (cofactor) terms plus the Hadamard bound of the rest, and a round-off
+// allowance of 1e-10 of the product of its rows' lengths, far above the error of
+// evaluating it in doubles. A point's motion by e moves a difference of two points by
+// at most 2 e.
+#ifndef LIGGGHTS_MEMBRANE_KINETIC_MARGIN_H
+#define LIGGGHTS_MEMBRANE_KINETIC_MARGIN_H
+
+#include "exterior_flood.h"
+
+#include <array>
+
+namespace membrane3d {
+
+// orientation(p0, p1, p2, p3) of the centres keeps its sign (false when it is zero).
+bool orientation_margin(const std::array<const Sphere *, 4> &p, double delta);
+
+// The power test of p[4] against the power sphere of p[0..3] (weights r^2) keeps its
+// sign (false when it is zero).
+bool power_margin(const std::array<const Sphere *, 5> &p, double delta);
+
+} // namespace membrane3d
+
+#endif

@@ -1,0 +1,88 @@
+// The kept regular triangulation of the kinetic flood (kinetic_flood.h): CGAL's
+// Regular_triangulation_3 of the spheres (weights r^2), its cells carrying the state of
+// their certificates, kept regular from step to step. Internal to kinetic_flood.cpp.
+#ifndef LIGGGHTS_MEMBRANE_KINETIC_TRIANGULATION_H
+#define LIGGGHTS_MEMBRANE_KINETIC_TRIANGULATION_H
+
+#include "kinetic_flood.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Regular_triangulation_cell_base_3.h>
+#include <CGAL/Regular_triangulation_vertex_base_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <array>
+#include <vector>
+
+namespace membrane3d {
+
+namespace kinetic {
+
+// Per cell: its index (for the flood), a serial number (0: new), the serial numbers of
+// its neighbours when its certificates were last decided, which of them have no margin
+// (bits 0-3: the facets it owns, bit 4: its orientation) and the step they were last
+// evaluated at.
+struct CellState {
+  int index = -1;
+  unsigned id = 0;
+  std::array<unsigned, 4> neighbour_id{};
+  unsigned char tight = 0;
+  long evaluated = -1;
+};
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb =
+    CGAL::Triangulation_vertex_base_with_info_3<int, K,
+                                                CGAL::Regular_triangulation_vertex_base_3<K>>;
+using Rcb = CGAL::Regular_triangulation_cell_base_3<K, CGAL::Triangulation_cell_base_3<K>,
+                                                    CGAL::Discard_hidden_points>;
+using Cb = CGAL::Triangulation_cell_base_with_info_3<CellState, K, Rcb>;
+using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
+using Triangulation = CGAL::Regular_triangulation_3<K, Tds>;
+using Cell = Triangulation::Cell_handle;
+using Vertex = Triangulation::Vertex_handle;
+
+inline K::Weighted_point_3 weighted_point(const Sphere &s)
+{
+  return K::Weighted_point_3(K::Point_3(s.x.x(), s.x.y(), s.x.z()), s.r * s.r);
+}
+
+// The certificates of a triangulation whose points have moved (kinetic_flood.h):
+// evaluated at the points the triangulation holds, margins from the references.
+class Certifier {
+ public:
+  Certifier(Triangulation &t, const std::vector<Sphere> &reference, double budget,
+            KineticStats &stats)
+    : t_(t), reference_(reference), budget_(budget), stats_(stats)
+  {
+  }
+
+  // One pass over the cells at `step`: certificates of new cells and changed facets,
+  // of cells with a point in `moved` (marked with `step`) and those without a margin.
+  // The spheres of failed certificates go to `failed`; false when one is undecided
+  // (triangulate anew).
+  bool pass(long step, const std::vector<long> &moved, std::vector<int> &failed);
+
+  long tight() const { return tight_; }
+
+ private:
+  Triangulation &t_;
+  const std::vector<Sphere> &reference_;
+  double budget_;
+  KineticStats &stats_;
+  unsigned next_id_ = 0;
+  long tight_ = 0;
+
+  // 1: holds, 0: fails, -1: undecided; *margin: whether it holds with a margin
+  int orientation(Cell c, bool *margin);
+  int facet(Cell c, int k, bool *margin);
+  static void add_points(Cell c, std::vector<int> &failed);
+};
+
+} // namespace kinetic
+
+} // namespace membrane3d
+
+#endif
