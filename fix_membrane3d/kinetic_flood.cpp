@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -63,6 +64,8 @@ struct KineticFlood::Impl {
   kinetic::Triangulation t;
   KineticStats stats;
   kinetic::Certifier certifier{t, reference, budget, stats};
+  MirrorFamilies mirrors;
+  std::vector<int> root; // per family: its sphere (plane 0), or -1
   long step = 0;
   bool forgotten = false;
   Boundary boundary;
@@ -76,6 +79,7 @@ struct KineticFlood::Impl {
     for (const Vertex v : vertex)
       if (v != Vertex()) v->set_point(kinetic::weighted_point(at[v->info()]));
   }
+  bool symmetric() const;
   void map_vertices();
   void rebuild();
   bool kinetic_step();
@@ -95,6 +99,28 @@ struct KineticFlood::Impl {
   std::array<int, 3> outward_facet(Cell c, int k) const;
   std::vector<Side> sides() const;
 };
+
+// Whether every image is the exact mirror of its sphere, in one plane per platen.
+bool KineticFlood::Impl::symmetric() const
+{
+  if (root.empty()) return false;
+  std::array<double, 2> sum{};
+  std::array<bool, 2> seen{false, false};
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    const int plane = mirrors.plane[i];
+    if (plane == 0) continue;
+    const int r = root[mirrors.family[i]];
+    if (r < 0) return false;
+    const Sphere &a = now[i], &b = now[r];
+    if (a.x.x() != b.x.x() || a.x.y() != b.x.y() || a.r != b.r) return false;
+    const double s = a.x.z() + b.x.z();
+    const int side = plane > 0;
+    if (seen[side] && s != sum[side]) return false;
+    sum[side] = s;
+    seen[side] = true;
+  }
+  return true;
+}
 
 void KineticFlood::Impl::map_vertices()
 {
@@ -118,6 +144,7 @@ void KineticFlood::Impl::rebuild()
   map_vertices();
   reference = now;
   held = now;
+  certifier.set_symmetric(symmetric());
   std::vector<int> failed;
   // every certificate of the new triangulation holds (CGAL's): this finds their margins;
   // one not decided here (a collinear hull facet): triangulate anew each step
@@ -218,6 +245,7 @@ bool KineticFlood::Impl::kinetic_step()
       ++stats.rereferenced;
     }
   hold(now);
+  certifier.set_symmetric(symmetric());
   std::vector<int> failed;
   if (!certifier.pass(step, moved, failed)) return false;
   if (!failed.empty() && !repair(std::move(failed))) return false;
@@ -228,7 +256,7 @@ bool KineticFlood::Impl::kinetic_step()
 }
 
 KineticFlood::KineticFlood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-                           double tolerance, double budget)
+                           double tolerance, double budget, const MirrorFamilies *mirrors)
 {
   check_flood_input(spheres, sealed, tolerance);
   if (!std::isfinite(budget) || !(budget > 0))
@@ -238,6 +266,22 @@ KineticFlood::KineticFlood(const std::vector<Sphere> &spheres, const std::vector
   impl_ = std::make_unique<Impl>(sealed, tolerance, budget);
   impl_->now = spheres;
   impl_->moved.assign(spheres.size(), -1);
+  if (mirrors) {
+    if (mirrors->family.size() != spheres.size() || mirrors->plane.size() != spheres.size())
+      throw std::invalid_argument("kinetic flood: mirror families for " +
+                                  std::to_string(mirrors->family.size()) + " of " +
+                                  std::to_string(spheres.size()) + " spheres");
+    impl_->mirrors = *mirrors;
+    int families = 0;
+    for (int f : mirrors->family) {
+      if (f < 0) throw std::invalid_argument("kinetic flood: a negative mirror family");
+      families = std::max(families, f + 1);
+    }
+    impl_->root.assign(static_cast<std::size_t>(families), -1);
+    for (std::size_t i = 0; i < spheres.size(); ++i)
+      if (mirrors->plane[i] == 0) impl_->root[mirrors->family[i]] = static_cast<int>(i);
+    impl_->certifier.set_mirrors(&impl_->mirrors);
+  }
   impl_->rebuild();
   impl_->flood();
 }
@@ -254,8 +298,13 @@ void KineticFlood::advance(const std::vector<Sphere> &now)
   check_not_flat(now, m.sealed);
   m.now = now;
   ++m.stats.steps;
+  const auto start = std::chrono::steady_clock::now();
   if (m.forgotten || !m.kinetic_step()) m.rebuild();
+  const auto kept = std::chrono::steady_clock::now();
   m.flood();
+  m.stats.triangulation_seconds += std::chrono::duration<double>(kept - start).count();
+  m.stats.flood_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - kept).count();
 }
 
 const Boundary &KineticFlood::boundary() const

@@ -42,6 +42,7 @@
 #define LIGGGHTS_MEMBRANE_KINETIC_FLOOD_H
 
 #include "exterior_flood.h"
+#include "flood_watch.h"
 
 #include <memory>
 #include <vector>
@@ -59,15 +60,19 @@ struct KineticStats {
   long tight = 0;        // certificates without a margin at the last step
   long hidden = 0;       // left-out spheres at the last step
   long rebuilds = 0;     // triangulated anew
+  double triangulation_seconds = 0, flood_seconds = 0; // of advance(): kept, flooded
 };
 
 class KineticFlood {
  public:
   // The flood of `spheres`, as exterior_boundary (throws what it throws). `budget`:
   // the motion (a length > 0) within which a certificate with a margin is not
-  // evaluated again.
+  // evaluated again. `mirrors` (optional, one entry per sphere): which spheres are a
+  // sphere and its platen images (flood_watch.h); at each step where the images are
+  // exact mirrors (checked), the power tests zero by their symmetry keep a margin
+  // (kinetic_margin.h: perturbed_margin) rather than being evaluated every step.
   KineticFlood(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
-               double tolerance, double budget);
+               double tolerance, double budget, const MirrorFamilies *mirrors = nullptr);
   ~KineticFlood();
   KineticFlood(const KineticFlood &) = delete;
   KineticFlood &operator=(const KineticFlood &) = delete;

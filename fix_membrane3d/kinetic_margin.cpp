@@ -71,4 +71,38 @@ bool power_margin(const std::array<const Sphere *, 5> &p, double delta)
   return first + rest + kRoundOff * rows < std::abs(det);
 }
 
+bool vertical_pairs(const std::array<int, 4> &family)
+{
+  int pairs = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) pairs += family[i] == family[j];
+  return pairs >= 2;
+}
+
+bool perturbed_margin(const std::array<const Sphere *, 5> &p, const std::array<int, 5> &family,
+                      double delta)
+{
+  std::array<int, 5> order{0, 1, 2, 3, 4};
+  // the order of the points where they shall be (a family on one vertical line): by z
+  // within a family, else by x (a tie across families fails the margin below)
+  auto less = [&p, &family](int a, int b) {
+    return family[a] == family[b] ? p[a]->x.z() < p[b]->x.z() : p[a]->x.x() < p[b]->x.x();
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (int i = 0; i + 1 < 5; ++i) {
+    const int a = order[i], b = order[i + 1];
+    const int axis = family[a] == family[b] ? 2 : 0;
+    if (!(std::abs(p[a]->x[axis] - p[b]->x[axis]) > 2 * delta)) return false;
+  }
+  for (int i = 4; i > 1; --i) {
+    const int q = order[i];
+    if (q == 4) return true;
+    std::array<int, 4> v{0, 1, 2, 3};
+    v[q] = 4; // the orientation with p in place of q
+    if (vertical_pairs({family[v[0]], family[v[1]], family[v[2]], family[v[3]]})) continue;
+    return orientation_margin({p[v[0]], p[v[1]], p[v[2]], p[v[3]]}, delta);
+  }
+  return true;
+}
+
 } // namespace membrane3d

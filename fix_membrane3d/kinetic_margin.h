@@ -23,6 +23,18 @@ bool orientation_margin(const std::array<const Sphere *, 4> &p, double delta);
 // sign (false when it is zero).
 bool power_margin(const std::array<const Sphere *, 5> &p, double delta);
 
+// The perturbed power test (CGAL's side_of_oriented_power_sphere with perturb, as
+// flood_watch.cpp's Predicates) of p[4] against p[0..3] whose determinant is zero by the
+// images' symmetry (points of one `family` share x and y): its result keeps its value
+// while the points' lexicographic order holds (each pair apart by more than 2 delta in
+// the coordinate that orders it: z within a family, x across) and the orientation
+// that decides it is zero by the symmetry too or keeps its sign.
+bool perturbed_margin(const std::array<const Sphere *, 5> &p, const std::array<int, 5> &family,
+                      double delta);
+
+// Four points of which two pairs share a family (or three one): coplanar.
+bool vertical_pairs(const std::array<int, 4> &family);
+
 } // namespace membrane3d
 
 #endif

@@ -40,7 +40,25 @@ int Certifier::orientation(Cell c, bool *margin)
 // cells at infinity, on the inner side of c's hull facet or, coplanar, outside its
 // power circle). Between a finite cell and one at infinity: the finite cell's
 // orientation, not here.
-int Certifier::facet(Cell c, int k, bool *margin)
+// p mirrors one of `cell` in a platen in which two others of it mirror each other: the
+// power test is zero (flood_watch.cpp).
+bool Certifier::mirror_zero(const std::array<int, 4> &cell, int p) const
+{
+  const auto &f = mirrors_->family, &z = mirrors_->plane;
+  auto mirrors = [&f, &z](int a, int b, int plane) {
+    return f[a] == f[b] && ((z[a] == 0 && z[b] == plane) || (z[b] == 0 && z[a] == plane));
+  };
+  for (int plane : {-1, 1})
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        if (!mirrors(cell[i], cell[j], plane)) continue;
+        for (int k = 0; k < 4; ++k)
+          if (k != i && k != j && mirrors(cell[k], p, plane)) return true;
+      }
+  return false;
+}
+
+int Certifier::facet(Cell c, int k, bool *margin, bool *by_mirror)
 {
   const Cell n = c->neighbor(k);
   const Vertex far = n->vertex(n->index(c));
@@ -70,8 +88,22 @@ int Certifier::facet(Cell c, int k, bool *margin)
   if (margin) {
     ++stats_.classified;
     const Sphere &p = reference_[far->info()];
-    *margin = c_infinite ? orientation_margin({finite[0], finite[1], finite[2], &p}, budget_)
-                         : power_margin({finite[0], finite[1], finite[2], finite[3], &p}, budget_);
+    *by_mirror = false;
+    if (c_infinite) {
+      *margin = orientation_margin({finite[0], finite[1], finite[2], &p}, budget_);
+    } else if (mirrors_ && symmetric_) {
+      const std::array<int, 4> v{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+                                 c->vertex(3)->info()};
+      *by_mirror = mirror_zero(v, far->info());
+      const auto &f = mirrors_->family;
+      *margin =
+          *by_mirror
+              ? perturbed_margin({finite[0], finite[1], finite[2], finite[3], &p},
+                                 {f[v[0]], f[v[1]], f[v[2]], f[v[3]], f[far->info()]}, budget_)
+              : power_margin({finite[0], finite[1], finite[2], finite[3], &p}, budget_);
+    } else {
+      *margin = power_margin({finite[0], finite[1], finite[2], finite[3], &p}, budget_);
+    }
   }
   return 1;
 }
@@ -108,21 +140,27 @@ bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int>
       const unsigned char bit = static_cast<unsigned char>(1u << k);
       if (s.id > nid) { // the neighbour owns the facet
         s.tight &= static_cast<unsigned char>(~bit);
+        s.mirror &= static_cast<unsigned char>(~bit);
         continue;
       }
       const Vertex far = n->vertex(n->index(Cell(c)));
       const bool moved_far = !t_.is_infinite(far) && moved[far->info()] == step;
       const bool decide = changed || (again && (moved_cell || moved_far));
-      if (!decide && !(again && (s.tight & bit))) continue;
-      bool margin = false;
-      const int holds = facet(c, k, decide ? &margin : nullptr);
+      const bool unsafe = (s.tight & bit) || (!symmetric_ && (s.mirror & bit));
+      if (!decide && !(again && unsafe)) continue;
+      bool margin = false, by_mirror = false;
+      const int holds = facet(c, k, decide ? &margin : nullptr, &by_mirror);
       if (holds < 0) return false;
       if (holds == 0) {
         ++stats_.failed;
         add_points(c, failed);
         if (!t_.is_infinite(far)) failed.push_back(far->info());
       }
-      if (decide) s.tight = margin ? (s.tight & static_cast<unsigned char>(~bit)) : (s.tight | bit);
+      if (decide) {
+        s.tight = margin ? (s.tight & static_cast<unsigned char>(~bit)) : (s.tight | bit);
+        s.mirror =
+            margin && by_mirror ? (s.mirror | bit) : (s.mirror & static_cast<unsigned char>(~bit));
+      }
     }
     s.evaluated = step;
     for (int k = 0; k < 5; ++k) tight_ += (s.tight >> k) & 1;

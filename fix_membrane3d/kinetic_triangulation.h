@@ -4,6 +4,7 @@
 #ifndef LIGGGHTS_MEMBRANE_KINETIC_TRIANGULATION_H
 #define LIGGGHTS_MEMBRANE_KINETIC_TRIANGULATION_H
 
+#include "flood_watch.h"
 #include "kinetic_flood.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -22,13 +23,13 @@ namespace kinetic {
 
 // Per cell: its index (for the flood), a serial number (0: new), the serial numbers of
 // its neighbours when its certificates were last decided, which of them have no margin
-// (bits 0-3: the facets it owns, bit 4: its orientation) and the step they were last
-// evaluated at.
+// (bits 0-3: the facets it owns, bit 4: its orientation), which facets have theirs by
+// the images' symmetry, and the step they were last evaluated at.
 struct CellState {
   int index = -1;
   unsigned id = 0;
   std::array<unsigned, 4> neighbour_id{};
-  unsigned char tight = 0;
+  unsigned char tight = 0, mirror = 0;
   long evaluated = -1;
 };
 
@@ -67,6 +68,12 @@ class Certifier {
 
   long tight() const { return tight_; }
 
+  // The points' families (flood_watch.h: a sphere and its images), and whether the
+  // images are at present exact mirrors of their spheres (x, y, r the same, one platen
+  // height for each side): then the tests zero by the symmetry stay zero.
+  void set_mirrors(const MirrorFamilies *mirrors) { mirrors_ = mirrors; }
+  void set_symmetric(bool symmetric) { symmetric_ = symmetric; }
+
  private:
   Triangulation &t_;
   const std::vector<Sphere> &reference_;
@@ -74,10 +81,14 @@ class Certifier {
   KineticStats &stats_;
   unsigned next_id_ = 0;
   long tight_ = 0;
+  const MirrorFamilies *mirrors_ = nullptr;
+  bool symmetric_ = false;
 
-  // 1: holds, 0: fails, -1: undecided; *margin: whether it holds with a margin
+  // 1: holds, 0: fails, -1: undecided; *margin: whether it holds with a margin,
+  // *by_mirror: whether that margin needs the symmetry
   int orientation(Cell c, bool *margin);
-  int facet(Cell c, int k, bool *margin);
+  int facet(Cell c, int k, bool *margin, bool *by_mirror);
+  bool mirror_zero(const std::array<int, 4> &cell, int p) const;
   static void add_points(Cell c, std::vector<int> &failed);
 };
 
