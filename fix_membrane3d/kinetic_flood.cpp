@@ -80,6 +80,7 @@ struct KineticFlood::Impl {
       if (v != Vertex()) v->set_point(kinetic::weighted_point(at[v->info()]));
   }
   bool symmetric() const;
+  std::vector<Vertex> vertices_of(std::vector<int> spheres) const;
   void map_vertices();
   void rebuild();
   bool kinetic_step();
@@ -193,9 +194,15 @@ bool KineticFlood::Impl::repair(std::vector<int> failed)
     if (failed.empty()) return false; // not so: not followed here
     // most of the points: cheaper to triangulate anew
     if (kRebuildShare * static_cast<double>(out.size() + failed.size()) > now.size()) return false;
-    hold(held); // where the triangulation is regular: CGAL may remove there
+    hold(held);            // where the triangulation is regular: CGAL may remove there
+    std::vector<int> hole; // the spheres around the removed ones
+    std::vector<Vertex> adjacent;
     for (int i : failed) {
       if (vertex[i] == Vertex()) continue;
+      adjacent.clear();
+      t.adjacent_vertices(vertex[i], std::back_inserter(adjacent));
+      for (const Vertex v : adjacent)
+        if (!t.is_infinite(v)) hole.push_back(v->info());
       t.remove(vertex[i]);
       vertex[i] = Vertex();
       out.push_back(i);
@@ -204,31 +211,43 @@ bool KineticFlood::Impl::repair(std::vector<int> failed)
     hold(now);
     failed.clear();
     // the cells the removals made, at the present positions
-    if (!certifier.pass(step, moved, failed)) return false;
+    if (!certifier.visit_around(vertices_of(hole), step, moved, failed)) return false;
   }
-  Vertex hint;
+  int last = -1; // the last sphere inserted: its vertex (if it is still one) the hint
   for (int i : out) {
-    if (!insert(i, hint)) return false;
-    if (vertex[i] != Vertex()) hint = vertex[i];
+    if (!insert(i, last >= 0 ? vertex[last] : Vertex())) return false;
+    if (vertex[i] != Vertex()) last = i;
   }
   std::vector<int> check;
   // the inserted spheres' cells: regular by CGAL; their margins
-  if (!certifier.pass(step, moved, check)) return false;
+  if (!certifier.visit_around(vertices_of(out), step, moved, check)) return false;
   return check.empty();
+}
+
+// The vertices of these spheres that are vertices, once each.
+std::vector<Vertex> KineticFlood::Impl::vertices_of(std::vector<int> spheres) const
+{
+  std::sort(spheres.begin(), spheres.end());
+  spheres.erase(std::unique(spheres.begin(), spheres.end()), spheres.end());
+  std::vector<Vertex> out;
+  for (int i : spheres)
+    if (vertex[i] != Vertex()) out.push_back(vertex[i]);
+  return out;
 }
 
 // A left-out sphere stays out while it conflicts with no cell: CGAL's insert decides.
 bool KineticFlood::Impl::reveal_hidden()
 {
-  bool revealed = false;
+  std::vector<int> revealed;
   for (std::size_t i = 0; i < now.size(); ++i) {
     if (vertex[i] != Vertex()) continue;
     if (!insert(static_cast<int>(i), Vertex())) return false;
-    revealed = revealed || vertex[i] != Vertex();
+    if (vertex[i] != Vertex()) revealed.push_back(static_cast<int>(i));
   }
-  if (revealed) {
+  if (!revealed.empty()) {
     std::vector<int> check;
-    if (!certifier.pass(step, moved, check) || !check.empty()) return false;
+    if (!certifier.visit_around(vertices_of(revealed), step, moved, check) || !check.empty())
+      return false;
   }
   stats.hidden = std::count(vertex.begin(), vertex.end(), Vertex());
   return true;
@@ -238,18 +257,23 @@ bool KineticFlood::Impl::kinetic_step()
 {
   ++step;
   const double reach = budget * budget;
+  std::vector<Vertex> around; // of the points that take a new reference
   for (std::size_t i = 0; i < now.size(); ++i)
     if (now[i].r != reference[i].r || (now[i].x - reference[i].x).squaredNorm() >= reach) {
       reference[i] = now[i];
       moved[i] = step;
       ++stats.rereferenced;
+      if (vertex[i] != Vertex()) around.push_back(vertex[i]);
     }
   hold(now);
   certifier.set_symmetric(symmetric());
   std::vector<int> failed;
-  if (!certifier.pass(step, moved, failed)) return false;
+  if (!certifier.visit_tight(step, moved, failed) ||
+      !certifier.visit_around(around, step, moved, failed))
+    return false;
   if (!failed.empty() && !repair(std::move(failed))) return false;
   if (!reveal_hidden()) return false;
+  certifier.compact();
   stats.tight = certifier.tight();
   held = now;
   return true;

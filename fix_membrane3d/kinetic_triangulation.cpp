@@ -110,8 +110,62 @@ int Certifier::facet(Cell c, int k, bool *margin, bool *by_mirror)
 
 bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int> &failed)
 {
-  tight_ = 0;
+  listed_.clear();
   for (auto c = t_.all_cells_begin(); c != t_.all_cells_end(); ++c) {
+    c->info().listed = false;
+    if (!visit(c, step, moved, failed)) return false;
+  }
+  tight_ = static_cast<long>(listed_.size());
+  return true;
+}
+
+bool Certifier::visit_tight(long step, const std::vector<long> &moved, std::vector<int> &failed)
+{
+  for (std::size_t k = 0; k < listed_.size(); ++k) // (visit may add to it)
+    if (t_.tds().cells().is_used(listed_[k].first) &&
+        listed_[k].first->info().id == listed_[k].second &&
+        !visit(listed_[k].first, step, moved, failed))
+      return false;
+  return true;
+}
+
+bool Certifier::visit_around(const std::vector<Vertex> &vertices, long step,
+                             const std::vector<long> &moved, std::vector<int> &failed)
+{
+  std::vector<Cell> around;
+  for (const Vertex v : vertices) {
+    around.clear();
+    t_.incident_cells(v, std::back_inserter(around));
+    for (const Cell c : around) {
+      if (!visit(c, step, moved, failed)) return false;
+      for (int k = 0; k < 4; ++k)
+        if (!visit(c->neighbor(k), step, moved, failed)) return false;
+    }
+  }
+  return true;
+}
+
+void Certifier::compact()
+{
+  std::size_t kept = 0;
+  for (auto &entry : listed_) {
+    const bool alive =
+        t_.tds().cells().is_used(entry.first) && entry.first->info().id == entry.second;
+    if (!alive) continue;
+    CellState &s = entry.first->info();
+    if (s.tight == 0 && s.mirror == 0) {
+      s.listed = false;
+      continue;
+    }
+    listed_[kept++] = entry;
+  }
+  listed_.resize(kept);
+  tight_ = static_cast<long>(kept);
+}
+
+bool Certifier::visit(Cell c, long step, const std::vector<long> &moved, std::vector<int> &failed)
+{
+  {
     CellState &s = c->info();
     const bool fresh = s.id == 0;
     if (fresh) s.id = ++next_id_;
@@ -121,7 +175,7 @@ bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int>
       const int v = c->vertex(j)->info();
       if (v >= 0 && moved[v] == step && !t_.is_infinite(c->vertex(j))) moved_cell = true;
     }
-    const bool finite = !t_.is_infinite(Cell(c));
+    const bool finite = !t_.is_infinite(c);
     if (finite && (fresh || (again && (moved_cell || (s.tight & kOrientation))))) {
       bool margin = false;
       const bool decide = fresh || moved_cell;
@@ -143,7 +197,7 @@ bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int>
         s.mirror &= static_cast<unsigned char>(~bit);
         continue;
       }
-      const Vertex far = n->vertex(n->index(Cell(c)));
+      const Vertex far = n->vertex(n->index(c));
       const bool moved_far = !t_.is_infinite(far) && moved[far->info()] == step;
       const bool decide = changed || (again && (moved_cell || moved_far));
       const bool unsafe = (s.tight & bit) || (!symmetric_ && (s.mirror & bit));
@@ -163,7 +217,10 @@ bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int>
       }
     }
     s.evaluated = step;
-    for (int k = 0; k < 5; ++k) tight_ += (s.tight >> k) & 1;
+    if ((s.tight != 0 || s.mirror != 0) && !s.listed) {
+      s.listed = true;
+      listed_.emplace_back(c, s.id);
+    }
   }
   return true;
 }

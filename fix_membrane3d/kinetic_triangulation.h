@@ -15,6 +15,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace membrane3d {
@@ -30,6 +31,7 @@ struct CellState {
   unsigned id = 0;
   std::array<unsigned, 4> neighbour_id{};
   unsigned char tight = 0, mirror = 0;
+  bool listed = false; // in the certifier's list of cells to evaluate each step
   long evaluated = -1;
 };
 
@@ -60,11 +62,22 @@ class Certifier {
   {
   }
 
-  // One pass over the cells at `step`: certificates of new cells and changed facets,
-  // of cells with a point in `moved` (marked with `step`) and those without a margin.
-  // The spheres of failed certificates go to `failed`; false when one is undecided
-  // (triangulate anew).
+  // The certificates of a cell at `step`: all of a new cell's, a changed facet's, those
+  // with a point in `moved` (marked with `step`) and those without a margin (once a
+  // step). The spheres of failed certificates go to `failed`; false when one is
+  // undecided (triangulate anew). A cell with a certificate without a margin is listed.
+  bool visit(Cell c, long step, const std::vector<long> &moved, std::vector<int> &failed);
+  // every cell (a new triangulation)
   bool pass(long step, const std::vector<long> &moved, std::vector<int> &failed);
+  // the listed cells
+  bool visit_tight(long step, const std::vector<long> &moved, std::vector<int> &failed);
+  // the cells around the vertices and their neighbours (all the cells made by an
+  // insertion or removal are around the vertices of its hole; the cells whose
+  // neighbour changed are their neighbours; a moved point's certificates are there)
+  bool visit_around(const std::vector<Vertex> &vertices, long step, const std::vector<long> &moved,
+                    std::vector<int> &failed);
+  // the list without the cells gone or with margins again
+  void compact();
 
   long tight() const { return tight_; }
 
@@ -83,6 +96,7 @@ class Certifier {
   long tight_ = 0;
   const MirrorFamilies *mirrors_ = nullptr;
   bool symmetric_ = false;
+  std::vector<std::pair<Cell, unsigned>> listed_; // (cell, its id)
 
   // 1: holds, 0: fails, -1: undecided; *margin: whether it holds with a margin,
   // *by_mirror: whether that margin needs the symmetry
