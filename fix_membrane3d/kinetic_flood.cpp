@@ -63,7 +63,7 @@ struct KineticFlood::Impl {
   std::vector<Vertex> vertex;               // per sphere, null when hidden
   kinetic::Triangulation t;
   KineticStats stats;
-  kinetic::Certifier certifier{t, reference, budget, stats};
+  kinetic::Certifier certifier{t, reference, now, budget, stats};
   MirrorFamilies mirrors;
   std::vector<int> root; // per family: its sphere (plane 0), or -1
   long step = 0;
@@ -178,20 +178,30 @@ bool KineticFlood::Impl::insert(int i, Vertex hint)
   return true;
 }
 
-// The spheres of failed certificates that have moved since the last step are removed
-// (each failed certificate held at the last step's positions, so it has one), then
-// inserted at their present positions.
+// Of each failed certificate, the sphere that has moved most since the last step is
+// removed (each failed certificate held at the last step's positions, so one has
+// moved), then inserted at its present position; the cells made by the removals are
+// certified at the present positions, and their failures repaired alike.
 bool KineticFlood::Impl::repair(std::vector<int> failed)
 {
   std::vector<int> out; // removed, to insert again
   while (!failed.empty()) {
-    std::sort(failed.begin(), failed.end());
-    failed.erase(std::unique(failed.begin(), failed.end()), failed.end());
-    failed.erase(
-        std::remove_if(failed.begin(), failed.end(),
-                       [this](int i) { return now[i].x == held[i].x && now[i].r == held[i].r; }),
-        failed.end());
-    if (failed.empty()) return false; // not so: not followed here
+    std::vector<int> pick;
+    for (std::size_t g = 0; g + 5 <= failed.size(); g += 5) {
+      int best = -1;
+      double most = 0;
+      for (std::size_t j = g; j < g + 5; ++j) {
+        const int i = failed[j];
+        if (i < 0 || vertex[i] == Vertex()) continue;
+        const double d = (now[i].x - held[i].x).squaredNorm() + (now[i].r != held[i].r);
+        if (d > most) most = d, best = i;
+      }
+      if (best < 0) return false; // not so: not followed here
+      pick.push_back(best);
+    }
+    std::sort(pick.begin(), pick.end());
+    pick.erase(std::unique(pick.begin(), pick.end()), pick.end());
+    failed.swap(pick);
     // most of the points: cheaper to triangulate anew
     if (kRebuildShare * static_cast<double>(out.size() + failed.size()) > now.size()) return false;
     hold(held);            // where the triangulation is regular: CGAL may remove there
@@ -271,7 +281,13 @@ bool KineticFlood::Impl::kinetic_step()
   if (!certifier.visit_tight(step, moved, failed) ||
       !certifier.visit_around(around, step, moved, failed))
     return false;
-  if (!failed.empty() && !repair(std::move(failed))) return false;
+  if (!failed.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool repaired = repair(std::move(failed));
+    stats.repair_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!repaired) return false;
+  }
   if (!reveal_hidden()) return false;
   certifier.compact();
   stats.tight = certifier.tight();

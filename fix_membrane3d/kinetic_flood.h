@@ -61,6 +61,7 @@ struct KineticStats {
   long hidden = 0;       // left-out spheres at the last step
   long rebuilds = 0;     // triangulated anew
   double triangulation_seconds = 0, flood_seconds = 0; // of advance(): kept, flooded
+  double repair_seconds = 0; // of triangulation_seconds: removing and inserting
 };
 
 class KineticFlood {

@@ -12,13 +12,91 @@ constexpr unsigned char kOrientation = 16;
 
 } // namespace
 
-void Certifier::add_points(Cell c, std::vector<int> &failed)
+// A failed certificate's points, five entries (-1: none): its cell's, the far vertex.
+void Certifier::add_points(Cell c, int far, std::vector<int> &failed)
 {
-  for (int k = 0; k < 4; ++k)
-    if (c->vertex(k)->info() >= 0) failed.push_back(c->vertex(k)->info());
+  for (int k = 0; k < 4; ++k) failed.push_back(c->vertex(k)->info());
+  failed.push_back(far);
 }
 
 // A finite cell is positively oriented.
+// Whether certificate k of c (0-3: the facet opposite vertex k, as facet() tests it;
+// 4: the orientation) keeps its sign while its points stay within delta of `at`.
+bool Certifier::margin_of(Cell c, int k, const std::vector<Sphere> &at, double delta,
+                          bool *by_mirror) const
+{
+  *by_mirror = false;
+  std::array<const Sphere *, 4> finite{};
+  int m = 0;
+  for (int j = 0; j < 4; ++j)
+    if (!t_.is_infinite(c->vertex(j))) finite[m++] = &at[c->vertex(j)->info()];
+  if (k == 4) return orientation_margin({finite[0], finite[1], finite[2], finite[3]}, delta);
+  const Cell n = c->neighbor(k);
+  const Vertex far = n->vertex(n->index(c));
+  const Sphere &p = at[far->info()];
+  if (t_.is_infinite(c)) return orientation_margin({finite[0], finite[1], finite[2], &p}, delta);
+  if (mirrors_ && symmetric_) {
+    const std::array<int, 4> v{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+                               c->vertex(3)->info()};
+    *by_mirror = mirror_zero(v, far->info());
+    const auto &f = mirrors_->family;
+    if (*by_mirror)
+      return perturbed_margin({finite[0], finite[1], finite[2], finite[3], &p},
+                              {f[v[0]], f[v[1]], f[v[2]], f[v[3]], f[far->info()]}, delta);
+  }
+  return power_margin({finite[0], finite[1], finite[2], finite[3], &p}, delta);
+}
+
+// The motion from the present positions within which the cell's certificates without
+// a margin keep their signs: budget / 2, / 8 or / 64 (at most two margins each), or 0.
+double Certifier::reach(Cell c) const
+{
+  double r = budget_ / 2;
+  const unsigned char tight = c->info().tight;
+  bool by_mirror = false;
+  for (int k = 0; k < 5 && r > 0; ++k) {
+    if (!((tight >> k) & 1)) continue;
+    if (r > budget_ / 8 && !margin_of(c, k, now_, r, &by_mirror)) r = budget_ / 8;
+    if (r == budget_ / 8 && !margin_of(c, k, now_, r, &by_mirror)) r = budget_ / 64;
+    if (r == budget_ / 64 && !margin_of(c, k, now_, r, &by_mirror)) r = 0;
+  }
+  return r;
+}
+
+// The present positions of the cell's points and of its neighbours' far vertices.
+void Certifier::anchor(Cell c)
+{
+  CellState &s = c->info();
+  if (s.anchor < 0) {
+    s.anchor = static_cast<int>(anchors_.size());
+    anchors_.emplace_back();
+  }
+  Anchor &a = anchors_[s.anchor];
+  for (int j = 0; j < 4; ++j) {
+    const Vertex v = c->vertex(j);
+    a.point[j] = t_.is_infinite(v) ? -1 : v->info();
+    const Cell n = c->neighbor(j);
+    const Vertex far = n->vertex(n->index(c));
+    a.point[4 + j] = t_.is_infinite(far) ? -1 : far->info();
+  }
+  for (int j = 0; j < 8; ++j)
+    if (a.point[j] >= 0) a.x[j] = now_[a.point[j]].x;
+  a.reach = symmetric_ || !mirrors_ ? reach(c) : 0.0;
+}
+
+// Whether the cell's points are all still within its reach of its anchor.
+bool Certifier::within_reach(Cell c) const
+{
+  const int slot = c->info().anchor;
+  if (slot < 0) return false;
+  const Anchor &a = anchors_[slot];
+  if (!(a.reach > 0) || (mirrors_ && !symmetric_)) return false;
+  const double r2 = a.reach * a.reach;
+  for (int j = 0; j < 8; ++j)
+    if (a.point[j] >= 0 && (now_[a.point[j]].x - a.x[j]).squaredNorm() >= r2) return false;
+  return true;
+}
+
 int Certifier::orientation(Cell c, bool *margin)
 {
   ++stats_.evaluated;
@@ -27,10 +105,8 @@ int Certifier::orientation(Cell c, bool *margin)
   if (o != CGAL::POSITIVE) return 0;
   if (margin) {
     ++stats_.classified;
-    *margin =
-        orientation_margin({&reference_[c->vertex(0)->info()], &reference_[c->vertex(1)->info()],
-                            &reference_[c->vertex(2)->info()], &reference_[c->vertex(3)->info()]},
-                           budget_);
+    bool by_mirror = false;
+    *margin = margin_of(c, 4, reference_, budget_, &by_mirror);
   }
   return 1;
 }
@@ -65,10 +141,6 @@ int Certifier::facet(Cell c, int k, bool *margin, bool *by_mirror)
   const bool c_infinite = t_.is_infinite(c);
   if (t_.is_infinite(far) || c_infinite != t_.is_infinite(n)) return 1;
   ++stats_.evaluated;
-  std::array<const Sphere *, 4> finite{};
-  int m = 0;
-  for (int j = 0; j < 4; ++j)
-    if (!t_.is_infinite(c->vertex(j))) finite[m++] = &reference_[c->vertex(j)->info()];
   if (c_infinite) {
     // a collinear hull facet (CGAL's power segment) is in no regular triangulation: the
     // finite cell on it is flat
@@ -87,23 +159,7 @@ int Certifier::facet(Cell c, int k, bool *margin, bool *by_mirror)
   if (t_.side_of_power_sphere(c, far->point(), true) != CGAL::ON_UNBOUNDED_SIDE) return 0;
   if (margin) {
     ++stats_.classified;
-    const Sphere &p = reference_[far->info()];
-    *by_mirror = false;
-    if (c_infinite) {
-      *margin = orientation_margin({finite[0], finite[1], finite[2], &p}, budget_);
-    } else if (mirrors_ && symmetric_) {
-      const std::array<int, 4> v{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
-                                 c->vertex(3)->info()};
-      *by_mirror = mirror_zero(v, far->info());
-      const auto &f = mirrors_->family;
-      *margin =
-          *by_mirror
-              ? perturbed_margin({finite[0], finite[1], finite[2], finite[3], &p},
-                                 {f[v[0]], f[v[1]], f[v[2]], f[v[3]], f[far->info()]}, budget_)
-              : power_margin({finite[0], finite[1], finite[2], finite[3], &p}, budget_);
-    } else {
-      *margin = power_margin({finite[0], finite[1], finite[2], finite[3], &p}, budget_);
-    }
+    *margin = margin_of(c, k, reference_, budget_, by_mirror);
   }
   return 1;
 }
@@ -111,8 +167,10 @@ int Certifier::facet(Cell c, int k, bool *margin, bool *by_mirror)
 bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int> &failed)
 {
   listed_.clear();
+  anchors_.clear();
   for (auto c = t_.all_cells_begin(); c != t_.all_cells_end(); ++c) {
     c->info().listed = false;
+    c->info().anchor = -1;
     if (!visit(c, step, moved, failed)) return false;
   }
   tight_ = static_cast<long>(listed_.size());
@@ -147,6 +205,7 @@ bool Certifier::visit_around(const std::vector<Vertex> &vertices, long step,
 
 void Certifier::compact()
 {
+  std::vector<Anchor> anchors;
   std::size_t kept = 0;
   for (auto &entry : listed_) {
     const bool alive =
@@ -155,11 +214,17 @@ void Certifier::compact()
     CellState &s = entry.first->info();
     if (s.tight == 0 && s.mirror == 0) {
       s.listed = false;
+      s.anchor = -1;
       continue;
+    }
+    if (s.anchor >= 0) {
+      anchors.push_back(anchors_[s.anchor]);
+      s.anchor = static_cast<int>(anchors.size()) - 1;
     }
     listed_[kept++] = entry;
   }
   listed_.resize(kept);
+  anchors_.swap(anchors);
   tight_ = static_cast<long>(kept);
 }
 
@@ -169,19 +234,24 @@ bool Certifier::visit(Cell c, long step, const std::vector<long> &moved, std::ve
     CellState &s = c->info();
     const bool fresh = s.id == 0;
     if (fresh) s.id = ++next_id_;
-    const bool again = s.evaluated != step; // not yet evaluated at this step
+    // not yet evaluated at this step, and (for the certificates without a margin) its
+    // points not within the reach of their last evaluation
+    const bool again = s.evaluated != step;
+    const bool tight_again = again && !within_reach(c);
+    bool evaluated = false;
     bool moved_cell = false;
     for (int j = 0; j < 4; ++j) {
       const int v = c->vertex(j)->info();
       if (v >= 0 && moved[v] == step && !t_.is_infinite(c->vertex(j))) moved_cell = true;
     }
     const bool finite = !t_.is_infinite(c);
-    if (finite && (fresh || (again && (moved_cell || (s.tight & kOrientation))))) {
+    if (finite && (fresh || (again && moved_cell) || (tight_again && (s.tight & kOrientation)))) {
+      evaluated = true;
       bool margin = false;
       const bool decide = fresh || moved_cell;
       if (orientation(c, decide ? &margin : nullptr) != 1) {
         ++stats_.failed;
-        add_points(c, failed);
+        add_points(c, -1, failed);
       }
       if (decide) s.tight = margin ? (s.tight & ~kOrientation) : (s.tight | kOrientation);
     }
@@ -200,15 +270,16 @@ bool Certifier::visit(Cell c, long step, const std::vector<long> &moved, std::ve
       const Vertex far = n->vertex(n->index(c));
       const bool moved_far = !t_.is_infinite(far) && moved[far->info()] == step;
       const bool decide = changed || (again && (moved_cell || moved_far));
-      const bool unsafe = (s.tight & bit) || (!symmetric_ && (s.mirror & bit));
-      if (!decide && !(again && unsafe)) continue;
+      if (!decide && !(again && (s.mirror & bit) && !symmetric_) &&
+          !(tight_again && (s.tight & bit)))
+        continue;
+      evaluated = true;
       bool margin = false, by_mirror = false;
       const int holds = facet(c, k, decide ? &margin : nullptr, &by_mirror);
       if (holds < 0) return false;
       if (holds == 0) {
         ++stats_.failed;
-        add_points(c, failed);
-        if (!t_.is_infinite(far)) failed.push_back(far->info());
+        add_points(c, t_.is_infinite(far) ? -1 : far->info(), failed);
       }
       if (decide) {
         s.tight = margin ? (s.tight & static_cast<unsigned char>(~bit)) : (s.tight | bit);
@@ -217,6 +288,7 @@ bool Certifier::visit(Cell c, long step, const std::vector<long> &moved, std::ve
       }
     }
     s.evaluated = step;
+    if (s.tight != 0 && (evaluated || s.anchor < 0)) anchor(c);
     if ((s.tight != 0 || s.mirror != 0) && !s.listed) {
       s.listed = true;
       listed_.emplace_back(c, s.id);

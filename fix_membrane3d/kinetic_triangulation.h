@@ -32,6 +32,7 @@ struct CellState {
   std::array<unsigned, 4> neighbour_id{};
   unsigned char tight = 0, mirror = 0;
   bool listed = false; // in the certifier's list of cells to evaluate each step
+  int anchor = -1;     // its entry of the certifier's anchors, or -1
   long evaluated = -1;
 };
 
@@ -56,15 +57,16 @@ inline K::Weighted_point_3 weighted_point(const Sphere &s)
 // evaluated at the points the triangulation holds, margins from the references.
 class Certifier {
  public:
-  Certifier(Triangulation &t, const std::vector<Sphere> &reference, double budget,
-            KineticStats &stats)
-    : t_(t), reference_(reference), budget_(budget), stats_(stats)
+  Certifier(Triangulation &t, const std::vector<Sphere> &reference, const std::vector<Sphere> &now,
+            double budget, KineticStats &stats)
+    : t_(t), reference_(reference), now_(now), budget_(budget), stats_(stats)
   {
   }
 
   // The certificates of a cell at `step`: all of a new cell's, a changed facet's, those
   // with a point in `moved` (marked with `step`) and those without a margin (once a
-  // step). The spheres of failed certificates go to `failed`; false when one is
+  // step). The spheres of failed certificates go to `failed`, five entries each (-1:
+  // none); false when one is
   // undecided (triangulate anew). A cell with a certificate without a margin is listed.
   bool visit(Cell c, long step, const std::vector<long> &moved, std::vector<int> &failed);
   // every cell (a new triangulation)
@@ -88,8 +90,18 @@ class Certifier {
   void set_symmetric(bool symmetric) { symmetric_ = symmetric; }
 
  private:
+  // A listed cell's points when its certificates without a margin were last evaluated
+  // (its vertices, then its neighbours' far vertices; -1: none), and the motion from
+  // there within which they keep their signs.
+  struct Anchor {
+    std::array<int, 8> point{};
+    std::array<Eigen::Vector3d, 8> x;
+    double reach = 0;
+  };
+
   Triangulation &t_;
-  const std::vector<Sphere> &reference_;
+  const std::vector<Sphere> &reference_, &now_;
+  std::vector<Anchor> anchors_;
   double budget_;
   KineticStats &stats_;
   unsigned next_id_ = 0;
@@ -103,7 +115,11 @@ class Certifier {
   int orientation(Cell c, bool *margin);
   int facet(Cell c, int k, bool *margin, bool *by_mirror);
   bool mirror_zero(const std::array<int, 4> &cell, int p) const;
-  static void add_points(Cell c, std::vector<int> &failed);
+  bool margin_of(Cell c, int k, const std::vector<Sphere> &at, double delta, bool *by_mirror) const;
+  double reach(Cell c) const;
+  void anchor(Cell c);
+  bool within_reach(Cell c) const;
+  static void add_points(Cell c, int far, std::vector<int> &failed);
 };
 
 } // namespace kinetic
