@@ -122,7 +122,7 @@ int main(int argc, char **argv)
       "mirrors,budget_d,steps,identical,advance_ms_median,advance_ms_mean,triangulation_ms_mean,"
       "repair_ms_mean,flood_ms_mean,ratio_to_fresh,evaluated_per_step,failed_per_step,removed_per_"
       "step,"
-      "max_removed,rereferenced_per_step,tight,hidden,rebuilds\n");
+      "max_removed,rereferenced_per_step,tight,hidden,rebuilds,floods_kept\n");
   for (const bool with_mirrors : {false, true})
     for (double b : budgets) {
       const membrane3d::MirrorFamilies families{mirrored.original, mirrored.image};
@@ -145,17 +145,17 @@ int main(int argc, char **argv)
       const double steps = static_cast<double>(frames.size() - 1);
       double mean = 0;
       for (double m : ms) mean += m / steps;
-      std::printf("%d,%g,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.0f,%.1f,%.1f,%ld,%.1f,%ld,%ld,%ld\n",
-                  with_mirrors, b, frames.size() - 1, identical, median(ms), mean,
-                  1e3 * (s.triangulation_seconds - first.triangulation_seconds) / steps,
-                  1e3 * (s.repair_seconds - first.repair_seconds) / steps,
-                  1e3 * (s.flood_seconds - first.flood_seconds) / steps,
-                  median(ms) / median(fresh_ms),
-                  static_cast<double>(s.evaluated - first.evaluated) / steps,
-                  static_cast<double>(s.failed - first.failed) / steps,
-                  static_cast<double>(s.removed - first.removed) / steps, max_removed,
-                  static_cast<double>(s.rereferenced - first.rereferenced) / steps, s.tight, s.hidden,
-                  s.rebuilds - first.rebuilds);
+      std::printf(
+          "%d,%g,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.0f,%.1f,%.1f,%ld,%.1f,%ld,%ld,%ld,%ld\n",
+          with_mirrors, b, frames.size() - 1, identical, median(ms), mean,
+          1e3 * (s.triangulation_seconds - first.triangulation_seconds) / steps,
+          1e3 * (s.repair_seconds - first.repair_seconds) / steps,
+          1e3 * (s.flood_seconds - first.flood_seconds) / steps, median(ms) / median(fresh_ms),
+          static_cast<double>(s.evaluated - first.evaluated) / steps,
+          static_cast<double>(s.failed - first.failed) / steps,
+          static_cast<double>(s.removed - first.removed) / steps, max_removed,
+          static_cast<double>(s.rereferenced - first.rereferenced) / steps, s.tight, s.hidden,
+          s.rebuilds - first.rebuilds, s.floods_kept - first.floods_kept);
     }
   return 0;
 }

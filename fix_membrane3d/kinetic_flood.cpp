@@ -1,5 +1,6 @@
 #include "kinetic_flood.h"
 
+#include "kinetic_exterior.h"
 #include "kinetic_triangulation.h"
 #include "power_flood.h"
 
@@ -69,8 +70,8 @@ struct KineticFlood::Impl {
   long step = 0;
   bool forgotten = false;
   Boundary boundary;
-  std::vector<Cell> cells;
-  std::vector<char> flooded;
+  kinetic::Exterior exterior{t, now, sealed, tolerance, vertex};
+  std::vector<int> touched; // this step: the spheres around which cells were made
 
   Impl(const std::vector<bool> &s, double tol, double b) : sealed(s), tolerance(tol), budget(b) {}
 
@@ -87,18 +88,6 @@ struct KineticFlood::Impl {
   bool repair(std::vector<int> failed);
   bool insert(int sphere, Vertex hint);
   bool reveal_hidden();
-  void flood();
-
-  // the flood of exterior_flood.cpp (PowerFlood), over the kept triangulation
-  bool finite(Vertex v) const { return !t.is_infinite(v); }
-  bool linked(Vertex a, Vertex b) const;
-  bool wall(Cell c, int k) const;
-  bool all_sealed(Cell c) const;
-  bool ignored_facet(Cell c, int k) const;
-  void flood_from_outside();
-  void keep_largest_dry_group();
-  std::array<int, 3> outward_facet(Cell c, int k) const;
-  std::vector<Side> sides() const;
 };
 
 // Whether every image is the exact mirror of its sphere, in one plane per platen.
@@ -134,6 +123,7 @@ void KineticFlood::Impl::map_vertices()
 void KineticFlood::Impl::rebuild()
 {
   ++stats.rebuilds;
+  exterior.invalidate();
   forgotten = false;
   t.clear();
   std::vector<std::pair<kinetic::K::Weighted_point_3, int>> points;
@@ -163,11 +153,17 @@ bool KineticFlood::Impl::insert(int i, Vertex hint)
   int li, lj;
   const Cell c = t.locate(p, lt, li, lj, hint == Vertex() ? Cell() : hint->cell());
   if (lt == kinetic::Triangulation::VERTEX) return false; // on another's centre
+  if (exterior.local()) {                                 // the cells the insertion destroys
+    std::vector<Cell> conflict;
+    t.find_conflicts(p, c, CGAL::Emptyset_iterator(), std::back_inserter(conflict));
+    for (const Cell x : conflict) exterior.destroying(x);
+  }
   const Vertex v = t.insert(p, lt, c, li, lj);
   if (v == Vertex()) { // hidden
     vertex[i] = Vertex();
     return true;
   }
+  touched.push_back(i);
   if (t.number_of_vertices() != before + 1) {
     v->info() = i;
     map_vertices(); // it hid others
@@ -213,6 +209,11 @@ bool KineticFlood::Impl::repair(std::vector<int> failed)
       t.adjacent_vertices(vertex[i], std::back_inserter(adjacent));
       for (const Vertex v : adjacent)
         if (!t.is_infinite(v)) hole.push_back(v->info());
+      if (exterior.local()) {
+        std::vector<Cell> star;
+        t.incident_cells(vertex[i], std::back_inserter(star));
+        for (const Cell c : star) exterior.destroying(c);
+      }
       t.remove(vertex[i]);
       vertex[i] = Vertex();
       out.push_back(i);
@@ -221,6 +222,7 @@ bool KineticFlood::Impl::repair(std::vector<int> failed)
     hold(now);
     failed.clear();
     // the cells the removals made, at the present positions
+    touched.insert(touched.end(), hole.begin(), hole.end());
     if (!certifier.visit_around(vertices_of(hole), step, moved, failed)) return false;
   }
   int last = -1; // the last sphere inserted: its vertex (if it is still one) the hint
@@ -270,6 +272,7 @@ bool KineticFlood::Impl::kinetic_step()
   std::vector<Vertex> around; // of the points that take a new reference
   for (std::size_t i = 0; i < now.size(); ++i)
     if (now[i].r != reference[i].r || (now[i].x - reference[i].x).squaredNorm() >= reach) {
+      if (now[i].r != reference[i].r) exterior.invalidate(); // the links' allowances
       reference[i] = now[i];
       moved[i] = step;
       ++stats.rereferenced;
@@ -323,7 +326,7 @@ KineticFlood::KineticFlood(const std::vector<Sphere> &spheres, const std::vector
     impl_->certifier.set_mirrors(&impl_->mirrors);
   }
   impl_->rebuild();
-  impl_->flood();
+  impl_->exterior.flood(impl_->boundary);
 }
 
 KineticFlood::~KineticFlood() = default;
@@ -339,9 +342,14 @@ void KineticFlood::advance(const std::vector<Sphere> &now)
   m.now = now;
   ++m.stats.steps;
   const auto start = std::chrono::steady_clock::now();
+  m.exterior.begin_step();
+  m.touched.clear();
   if (m.forgotten || !m.kinetic_step()) m.rebuild();
   const auto kept = std::chrono::steady_clock::now();
-  m.flood();
+  if (m.exterior.update(m.touched, m.boundary))
+    ++m.stats.floods_kept;
+  else
+    m.exterior.flood(m.boundary);
   m.stats.triangulation_seconds += std::chrono::duration<double>(kept - start).count();
   m.stats.flood_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - kept).count();
@@ -360,143 +368,6 @@ const KineticStats &KineticFlood::stats() const
 void KineticFlood::forget()
 {
   impl_->forgotten = true;
-}
-
-// The flood of exterior_flood.cpp, line for line (PowerFlood), over the kept cells.
-void KineticFlood::Impl::flood()
-{
-  cells.clear();
-  for (auto c = t.all_cells_begin(); c != t.all_cells_end(); ++c) {
-    c->info().index = static_cast<int>(cells.size());
-    cells.push_back(c);
-  }
-  flooded.assign(cells.size(), 0);
-  flood_from_outside();
-  keep_largest_dry_group();
-  boundary.facets.clear();
-  for (Cell c : cells) {
-    if (flooded[c->info().index]) continue;
-    for (int k = 0; k < 4; ++k)
-      if (flooded[c->neighbor(k)->info().index] && !ignored_facet(c, k))
-        boundary.facets.push_back(outward_facet(c, k));
-  }
-  for (auto &f : boundary.facets)
-    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-  std::sort(boundary.facets.begin(), boundary.facets.end());
-  boundary.side = sides();
-}
-
-bool KineticFlood::Impl::linked(Vertex a, Vertex b) const
-{
-  const bool across = sealed[a->info()] || sealed[b->info()];
-  const Sphere &p = now[a->info()], &q = now[b->info()];
-  return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance : tolerance);
-}
-
-bool KineticFlood::Impl::wall(Cell c, int k) const
-{
-  const Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3), d = c->vertex((k + 3) & 3);
-  return finite(a) && finite(b) && finite(d) && linked(a, b) && linked(b, d) && linked(a, d);
-}
-
-bool KineticFlood::Impl::all_sealed(Cell c) const
-{
-  for (int k = 0; k < 4; ++k) {
-    const Vertex v = c->vertex(k);
-    if (finite(v) && !sealed[v->info()]) return false;
-  }
-  return true;
-}
-
-bool KineticFlood::Impl::ignored_facet(Cell c, int k) const
-{
-  bool any_unsealed = false;
-  for (int j = 1; j < 4; ++j) {
-    const Vertex v = c->vertex((k + j) & 3);
-    if (!finite(v)) return true;
-    any_unsealed = any_unsealed || !sealed[v->info()];
-  }
-  return !any_unsealed;
-}
-
-void KineticFlood::Impl::flood_from_outside()
-{
-  std::vector<Cell> front;
-  for (Cell c : cells)
-    if (t.is_infinite(c) && !all_sealed(c)) {
-      flooded[c->info().index] = 1;
-      front.push_back(c);
-    }
-  while (!front.empty()) {
-    const Cell c = front.back();
-    front.pop_back();
-    for (int k = 0; k < 4; ++k) {
-      const Cell n = c->neighbor(k);
-      if (flooded[n->info().index] || all_sealed(n) || wall(c, k)) continue;
-      flooded[n->info().index] = 1;
-      front.push_back(n);
-    }
-  }
-}
-
-void KineticFlood::Impl::keep_largest_dry_group()
-{
-  std::vector<int> group(cells.size(), -1);
-  std::vector<long> size;
-  for (Cell seed : cells) {
-    if (flooded[seed->info().index] || group[seed->info().index] >= 0) continue;
-    const int g = static_cast<int>(size.size());
-    size.push_back(0);
-    std::vector<Cell> front{seed};
-    group[seed->info().index] = g;
-    while (!front.empty()) {
-      const Cell c = front.back();
-      front.pop_back();
-      if (!all_sealed(c)) ++size[g];
-      for (int k = 0; k < 4; ++k) {
-        const Cell n = c->neighbor(k);
-        if (flooded[n->info().index] || group[n->info().index] >= 0) continue;
-        group[n->info().index] = g;
-        front.push_back(n);
-      }
-    }
-  }
-  int keep = 0;
-  for (std::size_t g = 1; g < size.size(); ++g)
-    if (size[g] > size[keep]) keep = static_cast<int>(g);
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (!flooded[i] && group[i] != keep) flooded[i] = 1;
-}
-
-std::array<int, 3> KineticFlood::Impl::outward_facet(Cell c, int k) const
-{
-  Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3);
-  const Vertex d = c->vertex((k + 3) & 3), inner = c->vertex(k);
-  if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
-                        inner->point().point()) == CGAL::POSITIVE)
-    std::swap(a, b);
-  return {a->info(), b->info(), d->info()};
-}
-
-std::vector<Side> KineticFlood::Impl::sides() const
-{
-  std::vector<char> wet(now.size(), 0), dry(now.size(), 0);
-  for (Cell c : cells)
-    for (int k = 0; k < 4; ++k) {
-      const Vertex v = c->vertex(k);
-      if (!finite(v)) continue;
-      (flooded[c->info().index] ? wet : dry)[v->info()] = 1;
-    }
-  std::vector<Side> side(now.size(), Side::inside);
-  for (std::size_t i = 0; i < now.size(); ++i) {
-    if (vertex[i] == Vertex()) {
-      const Cell c = t.locate(kinetic::weighted_point(now[i]));
-      side[i] = flooded[c->info().index] ? Side::outside : Side::inside;
-    } else if (wet[i]) {
-      side[i] = dry[i] ? Side::surface : Side::outside;
-    }
-  }
-  return side;
 }
 
 } // namespace membrane3d

@@ -33,6 +33,11 @@ struct CellState {
   unsigned char tight = 0, mirror = 0;
   bool listed = false; // in the certifier's list of cells to evaluate each step
   int anchor = -1;     // its entry of the certifier's anchors, or -1
+  // the flood (kinetic_exterior.h): reached from outside (-1: made since the last
+  // flood), flooded, its dry group
+  signed char wet = -1;
+  bool flooded = false;
+  int group = -1;
   long evaluated = -1;
 };
 
