@@ -178,8 +178,8 @@ void Exterior::record_links()
       const Vertex v[3] = {c->vertex((k + 1) & 3), c->vertex((k + 2) & 3), c->vertex((k + 3) & 3)};
       for (int i = 0; i < 3; ++i) {
         const Vertex p = v[i], q = v[(i + 1) % 3];
-        if (!finite(p) || !finite(q) || p->info() > q->info()) continue;
-        const int a = p->info(), b = q->info();
+        if (!finite(p) || !finite(q)) continue;
+        const int a = std::min(p->info(), q->info()), b = std::max(p->info(), q->info());
         const Sphere &x = now_[a], &y = now_[b]; // (the anchor)
         const double distance = (x.x - y.x).norm(), gap = distance - x.r - y.r;
         const double t = threshold(a, b);
@@ -323,8 +323,8 @@ void Exterior::add_links(Cell c)
     const Vertex v[3] = {c->vertex((k + 1) & 3), c->vertex((k + 2) & 3), c->vertex((k + 3) & 3)};
     for (int i = 0; i < 3; ++i) {
       const Vertex p = v[i], q = v[(i + 1) % 3];
-      if (!finite(p) || !finite(q) || p->info() > q->info()) continue;
-      const int a = p->info(), b = q->info();
+      if (!finite(p) || !finite(q)) continue;
+      const int a = std::min(p->info(), q->info()), b = std::max(p->info(), q->info());
       // at the positions of the last whole flood, as the others
       const double distance = (anchor_[a] - anchor_[b]).norm();
       const double gap = distance - now_[a].r - now_[b].r, t = threshold(a, b);

@@ -52,6 +52,7 @@ class Exterior {
   {
     local_ = valid_;
     kept_delta_ = 0;
+    mode_ = 0;
   }
   // Before a cell of the triangulation is destroyed.
   void destroying(Cell c);

@@ -232,8 +232,9 @@ bool Certifier::visit(Cell c, long step, const std::vector<long> &moved, std::ve
 {
   {
     CellState &s = c->info();
-    const bool fresh = s.id == 0;
-    if (fresh) s.id = ++next_id_;
+    const bool fresh = !s.seen; // (its id may come from a neighbour's visit)
+    if (s.id == 0) s.id = ++next_id_;
+    s.seen = true;
     // not yet evaluated at this step, and (for the certificates without a margin) its
     // points not within the reach of their last evaluation
     const bool again = s.evaluated != step;

@@ -28,7 +28,8 @@ namespace kinetic {
 // the images' symmetry, and the step they were last evaluated at.
 struct CellState {
   int index = -1;
-  unsigned id = 0;
+  unsigned id = 0;   // given when the cell is first met (by itself or a neighbour)
+  bool seen = false; // its certificates decided once
   std::array<unsigned, 4> neighbour_id{};
   unsigned char tight = 0, mirror = 0;
   bool listed = false; // in the certifier's list of cells to evaluate each step

@@ -236,6 +236,39 @@ TEST(KineticFlood, FollowsSealedSpheres)
   EXPECT_GT(flood.stats().removed, 0);
 }
 
+// A sample from a sheared run near its platen (packings.h), with its platen images
+// (lateral_surface.h, exact on the height grid) and their mirror families, moved slowly:
+// links change more often than the triangulation, so the flood is kept on most steps
+// (kinetic_exterior.h), and each link it reads must be followed (a link left out of
+// those it follows leaves a stale membrane).
+TEST(KineticFlood, FollowsLinksWhileTheFloodIsKept)
+{
+  auto spheres = packings::sheared_sample();
+  const membrane3d::Platens platens = packings::sheared_sample_platens;
+  double d = 0;
+  for (const Sphere &x : spheres) d += 2 * x.r / static_cast<double>(spheres.size());
+  const double tolerance = 0.7 * d;
+  const membrane3d::Mirrored m = membrane3d::mirror_in_platens(spheres, platens, tolerance);
+  const membrane3d::MirrorFamilies families{m.original, m.image};
+  auto points = [&](const std::vector<Sphere> &now) {
+    std::vector<Sphere> p(m.original.size());
+    for (std::size_t k = 0; k < p.size(); ++k)
+      p[k] = {membrane3d::mirrored_position(now[m.original[k]].x, m.image[k], platens, m.grid),
+              now[m.original[k]].r};
+    return p;
+  };
+  KineticFlood flood(points(spheres), m.sealed, tolerance, 0.003 * d, &families);
+  std::mt19937 random(15);
+  std::vector<std::vector<Sphere>> frames;
+  for (int step = 0; step < 150; ++step) {
+    jiggle(spheres, 2e-4 * d, random);
+    frames.push_back(points(spheres));
+  }
+  const int changed = expect_fresh_boundaries(flood, frames, m.sealed, tolerance);
+  EXPECT_GE(changed, 5);
+  EXPECT_GE(flood.stats().floods_kept, 50);
+}
+
 TEST(KineticFlood, TriangulatesAnewWhenForgotten)
 {
   auto s = polydisperse_block(5, 5, 5, 0.35, 0.1, 12);
