@@ -13,6 +13,10 @@ namespace {
 // to the distance and the threshold: far above a few ulps.
 constexpr double kLinkRoundOff = 1e-9;
 
+// Where the flood has not been kept on the last two steps, the links are followed after
+// one whole flood in this many.
+constexpr int kRetry = 8;
+
 } // namespace
 
 // The flood of exterior_flood.cpp, line for line (PowerFlood), over the kept cells;
@@ -40,8 +44,10 @@ void Exterior::flood(Boundary &boundary)
     std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
   std::sort(boundary.facets.begin(), boundary.facets.end());
   boundary.side = sides();
-  record_links();
-  valid_ = true;
+  // following the links costs about a whole flood's links: where the flood has not been
+  // kept lately (the repairs cross the membrane), only every kRetry floods
+  valid_ = misses_ < 2 || ++retry_ % kRetry == 0;
+  if (valid_) record_links();
 }
 
 bool Exterior::linked(Vertex a, Vertex b) const
@@ -187,11 +193,6 @@ void Exterior::record_links()
       }
     }
   }
-  std::sort(links_.begin(), links_.end(),
-            [](const Link &l, const Link &m) { return l.a < m.a || (l.a == m.a && l.b < m.b); });
-  links_.erase(std::unique(links_.begin(), links_.end(),
-                           [](const Link &l, const Link &m) { return l.a == m.a && l.b == m.b; }),
-               links_.end());
   anchor_.resize(now_.size());
   for (std::size_t i = 0; i < now_.size(); ++i) anchor_[i] = now_[i].x;
 }
@@ -335,9 +336,13 @@ void Exterior::add_links(Cell c)
 
 bool Exterior::update(const std::vector<int> &touched, Boundary &out)
 {
-  if (!local_) return false;
+  if (!local_) {
+    if (valid_) ++misses_;
+    return false;
+  }
   const std::vector<Cell> cells = made(touched);
   const bool kept = (mode_ == 1 ? made_reached(cells) : made_dry(cells)) && links_hold();
+  misses_ = kept ? 0 : misses_ + 1;
   if (!kept) return false; // (the whole flood sets every cell's state)
   for (std::size_t i = 0; i < now_.size(); ++i)
     if (vertex_[i] == Vertex()) out.side[i] = side_of(static_cast<int>(i));

@@ -82,7 +82,8 @@ class Exterior {
   int kept_group_ = -1;
   long kept_size_ = 0, other_size_ = 0, kept_delta_ = 0;
   int mode_ = 0; // what the step destroyed: 1 reached cells, 2 dry cells of the sample
-  std::vector<Link> links_;
+  int misses_ = 0, retry_ = 0;          // steps since the flood was last kept; floods since
+  std::vector<Link> links_;             // (an edge may come more than once)
   std::vector<Eigen::Vector3d> anchor_; // the spheres' centres at the last whole flood
 
   bool finite(Vertex v) const { return !t_.is_infinite(v); }
