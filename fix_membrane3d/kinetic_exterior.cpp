@@ -13,9 +13,6 @@ namespace {
 // to the distance and the threshold: far above a few ulps.
 constexpr double kLinkRoundOff = 1e-9;
 
-// Where the flood has not been kept on the last two steps, the links are followed after
-// one whole flood in this many.
-constexpr int kRetry = 8;
 
 } // namespace
 
@@ -26,6 +23,8 @@ void Exterior::flood(Boundary &boundary)
   cells_.clear();
   for (auto c = t_.all_cells_begin(); c != t_.all_cells_end(); ++c) {
     c->info().index = static_cast<int>(cells_.size());
+    c->info().serial = ++serial_;
+    c->info().parent = -1;
     cells_.push_back(c);
   }
   flooded_.assign(cells_.size(), 0);
@@ -43,11 +42,10 @@ void Exterior::flood(Boundary &boundary)
   for (auto &f : boundary.facets)
     std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
   std::sort(boundary.facets.begin(), boundary.facets.end());
+  facets_ = std::set<std::array<int, 3>>(boundary.facets.begin(), boundary.facets.end());
   boundary.side = sides();
-  // following the links costs about a whole flood's links: where the flood has not been
-  // kept lately (the repairs cross the membrane), only every kRetry floods
-  valid_ = misses_ < 2 || ++retry_ % kRetry == 0;
-  if (valid_) record_links();
+  valid_ = true;
+  record_links();
 }
 
 bool Exterior::linked(Vertex a, Vertex b) const
@@ -83,21 +81,24 @@ bool Exterior::ignored_facet(Cell c, int k) const
   return !any_unsealed;
 }
 
+// (breadth first: a cell's way to the outside is short, so a change near the membrane
+// cuts few ways; the reached cells are the same in any order)
 void Exterior::flood_from_outside()
 {
   std::vector<Cell> front;
   for (Cell c : cells_)
     if (t_.is_infinite(c) && !all_sealed(c)) {
       flooded_[c->info().index] = 1;
+      c->info().parent = 4;
       front.push_back(c);
     }
-  while (!front.empty()) {
-    const Cell c = front.back();
-    front.pop_back();
+  for (std::size_t head = 0; head < front.size(); ++head) {
+    const Cell c = front[head];
     for (int k = 0; k < 4; ++k) {
       const Cell n = c->neighbor(k);
       if (flooded_[n->info().index] || all_sealed(n) || wall(c, k)) continue;
       flooded_[n->info().index] = 1;
+      n->info().parent = static_cast<signed char>(n->index(c));
       front.push_back(n);
     }
   }
@@ -131,10 +132,7 @@ void Exterior::keep_largest_dry_group()
   for (std::size_t i = 0; i < cells_.size(); ++i)
     if (!flooded_[i] && group[i] != keep) flooded_[i] = 1;
   kept_group_ = keep;
-  kept_size_ = size.empty() ? 0 : size[keep];
-  other_size_ = 0;
-  for (std::size_t g = 0; g < size.size(); ++g)
-    if (static_cast<int>(g) != keep) other_size_ = std::max(other_size_, size[g]);
+  size_ = size;
   for (Cell c : cells_) c->info().group = group[c->info().index];
 }
 
@@ -195,33 +193,52 @@ void Exterior::record_links()
   }
   anchor_.resize(now_.size());
   for (std::size_t i = 0; i < now_.size(); ++i) anchor_[i] = now_[i].x;
+  links_recorded_ = links_.size();
 }
 
-// Whether every link the flood reads has its status of the last whole flood.
-bool Exterior::links_hold() const
+void Exterior::begin_step()
 {
-  std::vector<double> moved(now_.size());
-  for (std::size_t i = 0; i < now_.size(); ++i) moved[i] = (now_[i].x - anchor_[i]).norm();
-  for (const Link &l : links_) {
-    if (moved[l.a] + moved[l.b] < l.slack) continue;
-    const Sphere &p = now_[l.a], &q = now_[l.b];
-    // the expression of the flood's test, to the last bit
-    if (((p.x - q.x).norm() - p.r - q.r <= threshold(l.a, l.b)) != l.linked) return false;
-  }
-  return true;
+  local_ = valid_;
+  ++step_;
+  orphan_roots_.clear();
+  dry_next_.clear();
+  removed_.clear();
+  klass_.clear();
 }
 
+// The facet of c opposite k out of the membrane, in either orientation.
+void Exterior::erase_facet(Cell c, int k)
+{
+  if (ignored_facet(c, k)) return;
+  std::array<int, 3> f{c->vertex((k + 1) & 3)->info(), c->vertex((k + 2) & 3)->info(),
+                       c->vertex((k + 3) & 3)->info()};
+  for (int turn = 0; turn < 2; ++turn) {
+    std::array<int, 3> g = f;
+    std::rotate(g.begin(), std::min_element(g.begin(), g.end()), g.end());
+    facets_.erase(g);
+    std::swap(f[0], f[1]);
+  }
+}
+
+// What the whole flood's state loses with the cell: its membrane facets, the way of the
+// cells reached through it, a dry cell of its group (its dry neighbours: seeds).
 void Exterior::destroying(Cell c)
 {
   const CellState &s = c->info();
-  if (!local_ || s.wet < 0) return; // made this step: not counted
-  const int mode = s.wet == 1 ? 1 : s.group == kept_group_ ? 2 : 0;
-  if (mode == 0 || (mode_ != 0 && mode != mode_)) {
-    local_ = false;
-    return;
+  if (!local_ || s.wet < 0 || s.serial == 0) return; // made this step: not counted
+  for (int k = 0; k < 4; ++k) {
+    const Cell n = c->neighbor(k);
+    const CellState &m = n->info();
+    if (m.wet < 0 || m.serial == 0) continue;
+    if (m.flooded != s.flooded) erase_facet(c, k);
+    if (s.wet == 1 && m.wet == 1 && m.parent >= 0 && m.parent < 4 && n->neighbor(m.parent) == c)
+      orphan_roots_.emplace_back(n, m.serial);
+    if (s.wet == 0 && m.wet == 0) {
+      unite(s.serial, m.serial);
+      dry_next_.emplace_back(n, m.serial);
+    }
   }
-  mode_ = mode;
-  if (mode == 2 && !all_sealed(c)) --kept_delta_;
+  if (s.wet == 0 && !all_sealed(c)) ++removed_[s.group];
 }
 
 Side Exterior::side_of(int i) const
@@ -235,89 +252,9 @@ Side Exterior::side_of(int i) const
   return wet ? (dry ? Side::surface : Side::outside) : Side::inside;
 }
 
-// The cells made this step, marked (wet -2): around the touched spheres (every cell made
-// by an insertion or removal is around the hole's or the inserted sphere's vertex).
-std::vector<Cell> Exterior::made(const std::vector<int> &touched) const
-{
-  std::vector<Cell> out, around;
-  for (int i : touched) {
-    if (vertex_[i] == Vertex()) continue;
-    around.clear();
-    t_.incident_cells(vertex_[i], std::back_inserter(around));
-    for (const Cell c : around)
-      if (c->info().wet == -1) {
-        c->info().wet = -2;
-        out.push_back(c);
-      }
-  }
-  return out;
-}
-
-// Dry: the made cells fill dry cells of the sample's group, reached from no cell.
-bool Exterior::made_dry(const std::vector<Cell> &made)
-{
-  for (const Cell c : made) {
-    if (t_.is_infinite(c) && !all_sealed(c)) return false; // a new way in
-    for (int k = 0; k < 4; ++k) {
-      const Cell n = c->neighbor(k);
-      const CellState &m = n->info();
-      if (m.wet == -2) continue;
-      if (m.wet == 0 && m.group != kept_group_) return false; // (not so: checked)
-      if (m.wet == 1 && !all_sealed(c) && !wall(n, n->index(c))) return false;
-    }
-    if (!all_sealed(c)) ++kept_delta_;
-  }
-  if (kept_size_ + kept_delta_ <= other_size_) return false;
-  kept_size_ += kept_delta_;
-  for (const Cell c : made) {
-    c->info().wet = 0;
-    c->info().group = kept_group_;
-    c->info().flooded = false;
-  }
-  return true;
-}
-
-// Reached: the made cells fill reached cells; none is all sealed, none has a wall
-// between two of them (so that a way through the destroyed cells goes through them),
-// each is reached, none lets the flood into a dry cell.
-bool Exterior::made_reached(const std::vector<Cell> &made)
-{
-  std::vector<Cell> front;
-  for (const Cell c : made) {
-    if (all_sealed(c)) return false;
-    bool seed = t_.is_infinite(c);
-    for (int k = 0; k < 4; ++k) {
-      const Cell n = c->neighbor(k);
-      const CellState &m = n->info();
-      const bool w = wall(c, k);
-      if (m.wet == -2 && w) return false;
-      if (m.wet == 1 && !w) seed = true;
-      if (m.wet == 0 && !w && !all_sealed(n)) return false;
-    }
-    if (seed) front.push_back(c);
-  }
-  for (const Cell c : front) c->info().wet = 1;
-  while (!front.empty()) {
-    const Cell c = front.back();
-    front.pop_back();
-    for (int k = 0; k < 4; ++k) {
-      const Cell n = c->neighbor(k);
-      if (n->info().wet != -2) continue;
-      n->info().wet = 1;
-      front.push_back(n);
-    }
-  }
-  for (const Cell c : made)
-    if (c->info().wet != 1) return false;
-  for (const Cell c : made) {
-    c->info().flooded = true;
-    c->info().group = -1;
-    add_links(c);
-  }
-  return true;
-}
-
-// The edges of a reached cell's facets, to the links the flood reads.
+// The edges of a reached cell's facets, to the links the flood reads, their status at
+// the present positions: it holds while the motions from anchor_ sum below the slack
+// (the present distance from the threshold less the motions from anchor_ so far).
 void Exterior::add_links(Cell c)
 {
   for (int k = 0; k < 4; ++k) {
@@ -326,28 +263,13 @@ void Exterior::add_links(Cell c)
       const Vertex p = v[i], q = v[(i + 1) % 3];
       if (!finite(p) || !finite(q)) continue;
       const int a = std::min(p->info(), q->info()), b = std::max(p->info(), q->info());
-      // at the positions of the last whole flood, as the others
-      const double distance = (anchor_[a] - anchor_[b]).norm();
-      const double gap = distance - now_[a].r - now_[b].r, t = threshold(a, b);
-      links_.push_back({a, b, std::abs(gap - t) - kLinkRoundOff * (distance + t), gap <= t});
+      const Sphere &x = now_[a], &y = now_[b];
+      const double distance = (x.x - y.x).norm(), gap = distance - x.r - y.r, t = threshold(a, b);
+      const double moved = (x.x - anchor_[a]).norm() + (y.x - anchor_[b]).norm();
+      links_.push_back(
+          {a, b, std::abs(gap - t) - kLinkRoundOff * (distance + t) - moved, gap <= t});
     }
   }
-}
-
-bool Exterior::update(const std::vector<int> &touched, Boundary &out)
-{
-  if (!local_) {
-    if (valid_) ++misses_;
-    return false;
-  }
-  const std::vector<Cell> cells = made(touched);
-  const bool kept = (mode_ == 1 ? made_reached(cells) : made_dry(cells)) && links_hold();
-  misses_ = kept ? 0 : misses_ + 1;
-  if (!kept) return false; // (the whole flood sets every cell's state)
-  for (std::size_t i = 0; i < now_.size(); ++i)
-    if (vertex_[i] == Vertex()) out.side[i] = side_of(static_cast<int>(i));
-  for (int i : touched) out.side[i] = side_of(i);
-  return true;
 }
 
 } // namespace kinetic

@@ -350,6 +350,7 @@ void KineticFlood::advance(const std::vector<Sphere> &now)
     ++m.stats.floods_kept;
   else
     m.exterior.flood(m.boundary);
+  m.stats.flood_visited = m.exterior.visited();
   m.stats.triangulation_seconds += std::chrono::duration<double>(kept - start).count();
   m.stats.flood_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - kept).count();

@@ -60,7 +60,8 @@ struct KineticStats {
   long tight = 0;        // certificates without a margin at the last step
   long hidden = 0;       // left-out spheres at the last step
   long rebuilds = 0;     // triangulated anew
-  long floods_kept = 0;  // steps whose flood was kept, not run again (kinetic_exterior.h)
+  long floods_kept = 0;  // steps whose flood was updated locally (kinetic_exterior.h)
+  long flood_visited = 0; // cells the local updates visited
   double triangulation_seconds = 0, flood_seconds = 0; // of advance(): kept, flooded
   double repair_seconds = 0; // of triangulation_seconds: removing and inserting
 };

@@ -39,6 +39,12 @@ struct CellState {
   signed char wet = -1;
   bool flooded = false;
   int group = -1;
+  // the flood's own (kinetic_reflood.cpp): a serial number (0: made since), the facet
+  // through which it was reached (4: from outside), the re-flood's fragment and its step
+  unsigned serial = 0;
+  signed char parent = -1;
+  int fragment = -1;
+  long stamp = -1;
   long evaluated = -1;
 };
 
