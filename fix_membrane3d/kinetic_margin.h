@@ -23,6 +23,11 @@ bool orientation_margin(const std::array<const Sphere *, 4> &p, double delta);
 // sign (false when it is zero).
 bool power_margin(const std::array<const Sphere *, 5> &p, double delta);
 
+// The largest of most, most / 2, ... (12 halvings) within which the orientation or the
+// power test keeps its sign by the bounds of orientation_margin or power_margin, or 0.
+double orientation_reach(const std::array<const Sphere *, 4> &p, double most);
+double power_reach(const std::array<const Sphere *, 5> &p, double most);
+
 // The perturbed power test (CGAL's side_of_oriented_power_sphere with perturb, as
 // flood_watch.cpp's Predicates) of p[4] against p[0..3] whose determinant is zero by the
 // images' symmetry (points of one `family` share x and y): its result keeps its value

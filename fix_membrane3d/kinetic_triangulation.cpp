@@ -2,6 +2,8 @@
 
 #include "kinetic_margin.h"
 
+#include <algorithm>
+
 namespace membrane3d {
 
 namespace kinetic {
@@ -47,19 +49,41 @@ bool Certifier::margin_of(Cell c, int k, const std::vector<Sphere> &at, double d
   return power_margin({finite[0], finite[1], finite[2], finite[3], &p}, delta);
 }
 
+// The motion from the present positions within which certificate k of c keeps its sign
+// (margin_of's bounds at the present positions): at most `most`, within a factor of 2
+// of the bounds' best (kinetic_margin.h), or 0.
+double Certifier::reach_of(Cell c, int k, double most) const
+{
+  std::array<const Sphere *, 4> finite{};
+  int m = 0;
+  for (int j = 0; j < 4; ++j)
+    if (!t_.is_infinite(c->vertex(j))) finite[m++] = &now_[c->vertex(j)->info()];
+  if (k == 4) return orientation_reach({finite[0], finite[1], finite[2], finite[3]}, most);
+  const Cell n = c->neighbor(k);
+  const Vertex far = n->vertex(n->index(c));
+  const Sphere &p = now_[far->info()];
+  if (t_.is_infinite(c)) return orientation_reach({finite[0], finite[1], finite[2], &p}, most);
+  if (mirrors_ && symmetric_) {
+    const std::array<int, 4> v{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+                               c->vertex(3)->info()};
+    if (mirror_zero(v, far->info())) { // the perturbed test: its tiers
+      bool by_mirror = false;
+      for (double r = most; r >= most / 64; r /= 8)
+        if (margin_of(c, k, now_, r, &by_mirror)) return r;
+      return 0;
+    }
+  }
+  return power_reach({finite[0], finite[1], finite[2], finite[3], &p}, most);
+}
+
 // The motion from the present positions within which the cell's certificates without
-// a margin keep their signs: budget / 2, / 8 or / 64 (at most two margins each), or 0.
+// a margin keep their signs (the least of their reaches, at most budget / 2), or 0.
 double Certifier::reach(Cell c) const
 {
   double r = budget_ / 2;
   const unsigned char tight = c->info().tight;
-  bool by_mirror = false;
-  for (int k = 0; k < 5 && r > 0; ++k) {
-    if (!((tight >> k) & 1)) continue;
-    if (r > budget_ / 8 && !margin_of(c, k, now_, r, &by_mirror)) r = budget_ / 8;
-    if (r == budget_ / 8 && !margin_of(c, k, now_, r, &by_mirror)) r = budget_ / 64;
-    if (r == budget_ / 64 && !margin_of(c, k, now_, r, &by_mirror)) r = 0;
-  }
+  for (int k = 0; k < 5 && r > 0; ++k)
+    if ((tight >> k) & 1) r = std::min(r, reach_of(c, k, r));
   return r;
 }
 

@@ -128,6 +128,7 @@ class Certifier {
   int facet(Cell c, int k, bool *margin, bool *by_mirror);
   bool mirror_zero(const std::array<int, 4> &cell, int p) const;
   bool margin_of(Cell c, int k, const std::vector<Sphere> &at, double delta, bool *by_mirror) const;
+  double reach_of(Cell c, int k, double most) const;
   double reach(Cell c) const;
   void anchor(Cell c);
   bool within_reach(Cell c) const;
