@@ -203,9 +203,12 @@ bool Certifier::pass(long step, const std::vector<long> &moved, std::vector<int>
 
 bool Certifier::visit_tight(long step, const std::vector<long> &moved, std::vector<int> &failed)
 {
+  // a listed cell within its reach has nothing to evaluate here: its moved points'
+  // certificates and its changed facets are visited around them (visit_around)
   for (std::size_t k = 0; k < listed_.size(); ++k) // (visit may add to it)
     if (t_.tds().cells().is_used(listed_[k].first) &&
         listed_[k].first->info().id == listed_[k].second &&
+        (listed_[k].first->info().mirror != 0 || !within_reach(listed_[k].first)) &&
         !visit(listed_[k].first, step, moved, failed))
       return false;
   return true;
