@@ -30,14 +30,19 @@
 // - the left-out (hidden) spheres are offered to CGAL's insert each step, which keeps
 //   them out while they conflict with no cell, and a sphere that CGAL hides on an
 //   insertion is left out from then on.
-// The flood is then run again over the kept triangulation, exactly as exterior_flood
-// runs it (the walls at the present positions). What CGAL or the certificates do not
+// The flood is then updated locally around the cells destroyed and made and the facets
+// whose walls changed, to the whole flood's result (kinetic_exterior.h says why), or,
+// where that is not shown (a tie for the largest dry group, the sample not the last
+// one's continuation, the links followed grown threefold: counted as steps not in
+// floods_kept), run again over the kept triangulation exactly as exterior_flood runs it
+// (the walls at the present positions). What CGAL or the certificates do not
 // decide (a collinear hull facet, a sphere on another's centre) is found by
 // triangulating anew (counted: rebuilds).
 //
 // One thing is not a function of the spheres in exterior_boundary() itself: among dry
 // groups of exactly the same size, the one kept is the first in CGAL's storage order,
-// which depends on the triangulation's history; then the two may differ.
+// which depends on the triangulation's history; then the two may differ (the local
+// update never decides a tie: it runs the whole flood).
 #ifndef LIGGGHTS_MEMBRANE_KINETIC_FLOOD_H
 #define LIGGGHTS_MEMBRANE_KINETIC_FLOOD_H
 
