@@ -31,6 +31,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include "membrane3d_auto.h"
 #include "membrane3d_gather.h"
 #include "membrane_fix.h"
+#include "member_halo.h"
 
 namespace LAMMPS_NS {
 
@@ -81,7 +82,13 @@ class FixMembrane3d : public MembraneFix {
   double detections = 0.0;
 
   // this step
-  membrane3d::GatheredSpheres members; // the member atoms now, in member_tags' order
+  membrane3d::GatheredSpheres members; // the member atoms now (at a detection, every auto)
+  // placement: the members within two rings of this rank's own (member_halo.h), now
+  MemberHalo halo{lmp, 4, 2};
+  std::vector<membrane3d::Sphere> near; // halo.plan().needed's
+  bigint halo_step = -1;                // refreshed for this step
+  double halo_detections = -1.0;        // ... and this topology
+  bigint halo_detected = -1;
   bool warned_rim = false;
   bool warned_moved = false; // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];
@@ -91,7 +98,9 @@ class FixMembrane3d : public MembraneFix {
   bool detection_due();
   void detect();
   void wear_types(const membrane3d::GatheredSpheres &g);
+  bool members_present();
   void place_and_apply();
+  void write_frame();
 };
 
 } // namespace LAMMPS_NS
