@@ -376,5 +376,5 @@ double FixMembrane3d::memory_usage()
                              (members.spheres.capacity() + detected_at.capacity() +
                               near.capacity()) *
                                  sizeof(membrane3d::Sphere)) +
-         automatic.memory_usage() + types.memory_usage();
+         automatic.memory_usage() + types.memory_usage() + halo.memory_usage();
 }

@@ -56,6 +56,13 @@ class MemberHalo {
   void gather_on_root(const std::function<void(int, double *)> &pack,
                       std::vector<double> &records);
 
+  double memory_usage() const
+  {
+    return static_cast<double>(tags_.capacity() * sizeof(AtomId) +
+                               owned_atoms_.capacity() * sizeof(int)) +
+           cells_.memory_usage() + membrane::memory_usage(plan_);
+  }
+
   // this rank's bytes sent (exchanges, owner maps, gathers) and owner maps made
   double bytes_sent = 0.0;
   double plans_made = 0.0;

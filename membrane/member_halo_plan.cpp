@@ -88,6 +88,24 @@ std::vector<int> MemberCells::cells_on(const std::vector<int> &members) const
   return out;
 }
 
+double MemberCells::memory_usage() const
+{
+  return static_cast<double>((cells_.capacity() + start_.capacity() + on_.capacity()) *
+                                 sizeof(int) +
+                             mark_.capacity() * sizeof(unsigned));
+}
+
+double memory_usage(const HaloPlan &plan)
+{
+  double bytes = 0.0;
+  for (const std::vector<int> *v : {&plan.owned, &plan.needed, &plan.missing, &plan.to,
+                                    &plan.from, &plan.own_slot})
+    bytes += v->capacity() * sizeof(int);
+  for (const auto *lists : {&plan.send, &plan.send_slot, &plan.recv, &plan.recv_slot})
+    for (const std::vector<int> &v : *lists) bytes += v.capacity() * sizeof(int);
+  return bytes;
+}
+
 HaloPlan plan_halo(const MemberCells &cells, const std::vector<int> &owner, int me, int rings)
 {
   if (owner.size() != cells.members())

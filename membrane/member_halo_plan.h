@@ -36,6 +36,7 @@ class MemberCells {
   std::vector<int> within(const std::vector<int> &seeds, int rings) const;
   // The cells on any of `members`, ascending.
   std::vector<int> cells_on(const std::vector<int> &members) const;
+  double memory_usage() const;
 
  private:
   int stride_ = 0;
@@ -56,6 +57,8 @@ struct HaloPlan {
   std::vector<std::vector<int>> send, send_slot, recv, recv_slot;
   std::vector<int> own_slot; // the position in needed of each owned member
 };
+
+double memory_usage(const HaloPlan &plan);
 
 // The plan of rank `me` from the owner of each member (-1: none).
 HaloPlan plan_halo(const MemberCells &cells, const std::vector<int> &owner, int me, int rings);
