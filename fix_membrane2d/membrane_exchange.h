@@ -6,7 +6,6 @@
 #ifndef LIGGGHTS_MEMBRANE_MEMBRANE_EXCHANGE_H
 #define LIGGGHTS_MEMBRANE_MEMBRANE_EXCHANGE_H
 
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -15,6 +14,7 @@
 #include "membrane_band_cache.h"
 #include "membrane_chain.h"
 #include "membrane_state.h"
+#include "scoped_seconds.h"
 
 namespace membrane {
 
@@ -135,21 +135,8 @@ struct Traffic {
   long long first_step = 0;
   long long first_detections = 0;
 };
-// Adds the wall-clock time of its scope to `total` (Traffic's seconds).
-class ScopedSeconds {
- public:
-  explicit ScopedSeconds(double &total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-  ~ScopedSeconds()
-  {
-    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  ScopedSeconds(const ScopedSeconds &) = delete;
-  ScopedSeconds &operator=(const ScopedSeconds &) = delete;
-
- private:
-  double &total_;
-  std::chrono::steady_clock::time_point start_;
-};
+// The wall-clock time of a scope (Traffic's seconds).
+using ::ScopedSeconds;
 
 // The bytes a rank receives in an allgather of `doubles` values from `ranks`
 // ranks, the counts included.

@@ -55,6 +55,7 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
 {
   parse(narg, arg, {}, [](StyleArgs &, const std::string &) { return false; });
   size_vector = OUTPUT_SIZE;
+  halo.received = &traffic.received;
   std::fill(output, output + OUTPUT_SIZE, 0.0);
 }
 
@@ -68,6 +69,7 @@ void FixMembrane3d::setup_pre_force(int vflag)
   // the group changed between two runs: its member IDs may name other spheres now
   if (!group_as_remembered()) member_tags.clear();
   halo_step = -1; // the atoms migrated and were sorted since the last run's end
+  traffic.start(update->ntimestep, detections);
   pre_force(vflag);
 }
 
@@ -83,18 +85,22 @@ void FixMembrane3d::post_run()
 {
   types.restore();
   remember_group(group_checksum());
+  traffic.report(lmp, prefix, id, update->ntimestep, detections);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixMembrane3d::pre_force(int)
 {
+  const ScopedSeconds timing(traffic.fix_seconds);
   evaluate_inputs();
   if (on_any_rank(detection_due())) {
+    const Membrane3dTraffic::Detection timed(traffic);
     detect();
     return;
   }
-  if (!types.applied()) { // a run's start, after a restart write: the members' types
+  // a run's start, after a restart write: the members' own types
+  if (types.type() > 0 && !types.applied()) {
     gather().tags(member_tags, members);
     wear_types(members);
   }
@@ -130,7 +136,7 @@ void FixMembrane3d::pre_force(int)
 // Each gather stops the run on an atom that is unusable or not between the platens.
 Membrane3dGather FixMembrane3d::gather() const
 {
-  return {lmp, prefix, groupbit, platens};
+  return {lmp, prefix, groupbit, platens, &traffic.received};
 }
 
 // This rank's view (on_any_rank makes it every rank's); when not due, `members`
@@ -180,6 +186,7 @@ bool FixMembrane3d::members_present()
 
 void FixMembrane3d::post_force(int)
 {
+  const ScopedSeconds timing(traffic.fix_seconds);
   place_and_apply(); // the positions gathered in pre_force: they do not move in between
 }
 

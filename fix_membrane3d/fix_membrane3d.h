@@ -30,6 +30,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include "lateral_surface.h"
 #include "membrane3d_auto.h"
 #include "membrane3d_gather.h"
+#include "membrane3d_traffic.h"
 #include "membrane_fix.h"
 #include "member_halo.h"
 
@@ -92,6 +93,7 @@ class FixMembrane3d : public MembraneFix {
   bool warned_rim = false;
   bool warned_moved = false; // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];
+  mutable Membrane3dTraffic traffic; // this run's figures, printed at its end
   bool centres_placed = false; // output[VOLUME] is this step's
 
   Membrane3dGather gather() const; // this step's (membrane3d_gather.h)

@@ -37,7 +37,8 @@ void share(const Membrane3dGather &from, const std::vector<double> &send, Gather
 {
   std::vector<double> all;
   std::vector<int> counts, displs;
-  allgather_doubles(from.lmp->world, send, all, counts, displs);
+  const double bytes = allgather_doubles(from.lmp->world, send, all, counts, displs);
+  if (from.received) *from.received += bytes;
   const std::size_t n = all.size() / FIELDS;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);

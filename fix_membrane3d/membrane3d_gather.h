@@ -21,6 +21,7 @@ struct Membrane3dGather {
   const std::string &prefix;
   int groupbit;
   membrane3d::Platens platens; // this step's
+  double *received = nullptr;  // the bytes received in the gathers are added here
 
   // Every atom of the group.
   void group(membrane3d::GatheredSpheres &out) const;

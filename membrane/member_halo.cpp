@@ -80,7 +80,7 @@ void MemberHalo::make_plan(int groupbit)
   std::vector<int> all(displs.back() + counts.back());
   MPI_Allgatherv(owned.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
                  lmp_->world);
-  bytes_sent += sizeof(int) * (1.0 + n);
+  count(sizeof(int) * (static_cast<double>(nprocs) + all.size()));
   std::vector<int> owner(tags_.size(), -1);
   for (int r = 0; r < nprocs; r++)
     for (int k = displs[r]; k < displs[r] + counts[r]; k++) owner[all[k]] = r;
@@ -112,11 +112,11 @@ void MemberHalo::exchange(const std::function<void(int, double *)> &pack,
     requests.emplace_back();
     MPI_Isend(out[k].data(), static_cast<int>(out[k].size()), MPI_DOUBLE, plan_.to[k], HALO_TAG,
               lmp_->world, &requests.back());
-    bytes_sent += sizeof(double) * out[k].size();
   }
   for (std::size_t k = 0; k < plan_.owned.size(); k++)
     pack(owned_atoms_[k], &records[plan_.own_slot[k] * width_]);
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  for (const std::vector<double> &v : in) count(sizeof(double) * static_cast<double>(v.size()));
   for (std::size_t k = 0; k < plan_.from.size(); k++)
     for (std::size_t j = 0; j < plan_.recv_slot[k].size(); j++)
       std::copy_n(&in[k][j * width_], width_, &records[plan_.recv_slot[k][j] * width_]);
@@ -141,7 +141,7 @@ void MemberHalo::gather_on_root(const std::function<void(int, double *)> &pack,
   std::vector<double> all(me == 0 ? displs.back() + counts.back() : 0);
   MPI_Gatherv(send.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0,
               lmp_->world);
-  if (me != 0) bytes_sent += sizeof(double) * send.size();
+  if (me == 0) count(sizeof(double) * static_cast<double>(all.size() - send.size()));
   records.clear();
   if (me != 0) return;
   records.assign(tags_.size() * width_, 0.0);

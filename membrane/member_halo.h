@@ -63,8 +63,9 @@ class MemberHalo {
            cells_.memory_usage() + membrane::memory_usage(plan_);
   }
 
-  // this rank's bytes sent (exchanges, owner maps, gathers) and owner maps made
-  double bytes_sent = 0.0;
+  // where to add the bytes this rank receives (exchanges, owner maps, gathers; null:
+  // nowhere), and the owner maps made
+  double *received = nullptr;
   double plans_made = 0.0;
 
  private:
@@ -79,6 +80,10 @@ class MemberHalo {
   bool lost_ = false; // the plan has a member no rank owned
 
   void make_plan(int groupbit);
+  void count(double bytes) const
+  {
+    if (received) *received += bytes;
+  }
 };
 
 #endif

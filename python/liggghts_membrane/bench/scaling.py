@@ -89,11 +89,11 @@ def parse_args(argv):
 
 
 # ----------------------------------------------------------------------------- running
-def mpi_run(np_, script, folder, name, settings, timed=True):
+def mpi_run(np_, script, folder, name, settings, timed=True, cwd=None):
     """One run of the executable in `folder` (screen NAME.screen, peak RSS per rank
     NAME.rss.RANK), reused when NAME.done holds the same settings (and for a `timed`
-    run the same executable; a sample stays valid across builds): (screen text,
-    peak RSS per rank [MB], wall seconds)."""
+    run the same executable; a sample stays valid across builds), from the folder
+    `cwd` (default: the script's): (screen text, peak RSS per rank [MB], wall seconds)."""
     os.makedirs(folder, exist_ok=True)
     screen = os.path.join(folder, name + ".screen")
     done = os.path.join(folder, name + ".done")
@@ -104,7 +104,7 @@ def mpi_run(np_, script, folder, name, settings, timed=True):
         cmd = (common.mpi_command(np_) + ["/usr/bin/python3", "-c", RSS_WRAPPER, rss, common.EXE,
                "-in", script, "-log", "none"] + common.var_args(settings))
         common.log(f"  {name}: {np_} rank(s)")
-        rc, wall, _ = common.run_command(cmd, os.path.dirname(script), screen, 4 * 3600)
+        rc, wall, _ = common.run_command(cmd, cwd or os.path.dirname(script), screen, 4 * 3600)
         if rc != 0:
             raise RuntimeError(f"{name} failed ({rc}): {common.symptom(screen)} (see {os.path.relpath(screen, common.ROOT)})")
         with open(done, "w") as f:
@@ -145,7 +145,7 @@ def prepare_from_scratch(scale, np_):
 
 
 def read_walls(path):
-    """The walls file of in.prepare (OUT.walls: 'variable NAME equal VALUE' lines)."""
+    """A walls file of in.prepare or in.cuboid_prepare (OUT.walls: 'variable NAME equal VALUE' lines)."""
     values = params.read_variables(path, follow_includes=False)
     return {name: params.number(values, name) for name in values}
 
@@ -269,6 +269,24 @@ MEMBRANE_COLLECTIVES = 3   # fix membrane2d per step: count allgather, data allg
 HALO_MESSAGES = 4          # exchanges with the 4 neighbouring sub-domains of a 2D grid
 
 
+def efficiency(p, network, work_s, ghosts, halo_messages, membrane_s, membrane_bytes,
+               membrane_collectives=MEMBRANE_COLLECTIVES):
+    """The step at P ranks on one network (a NETWORKS value): the rigid test's work of a
+    step on one rank `work_s` [s] divided evenly; its halo, HALO_MESSAGES-like
+    `halo_messages` exchanges of `ghosts` ghosts of FORWARD_DOUBLES each; its
+    LIGGGHTS_COLLECTIVES small allreduces; a membrane adding `membrane_s` [s] of work on
+    each rank, `membrane_collectives` collectives and `membrane_bytes` received per rank.
+    Returns (compute, halo, collectives, membrane [s], efficiency rigid, efficiency
+    with the membrane)."""
+    alpha, beta = network
+    t_calc = work_s / p
+    t_halo = halo_messages * alpha + 8 * FORWARD_DOUBLES * ghosts / beta
+    t_coll = LIGGGHTS_COLLECTIVES * 2 * math.log2(p) * alpha
+    t_mem = membrane_s + membrane_collectives * math.log2(p) * alpha + membrane_bytes / beta
+    t_rigid = t_calc + t_halo + t_coll
+    return t_calc, t_halo, t_coll, t_mem, work_s / (p * t_rigid), work_s / (p * (t_rigid + t_mem))
+
+
 def model(rows):
     """Parallel efficiency at P = 16, 64, 256 for the largest sample, from the measured
     work per particle-step (1 rank, largest scale run on 1 rank), the ghosts per unit
@@ -291,17 +309,12 @@ def model(rows):
             px = max(1, round(math.sqrt(p / 2)))       # processors * * 1 on a 1 x 2 sample
             side = width / px
             ghosts = 4 * side * ghosts_per_m
-            t_calc = 1e-6 * r1["us_rigid"] * n / p     # s per step, the rigid shear's work divided
-            t_halo = HALO_MESSAGES * alpha + 8 * FORWARD_DOUBLES * ghosts / beta
-            t_coll = LIGGGHTS_COLLECTIVES * 2 * math.log2(p) * alpha
             # the fix's own work on 2 ranks (chain-sized, on every rank), its gather's volume
             t_fix2 = 1e-3 * r2["membrane_share_pct"] / 100 * r2["ms_membrane"]
-            t_mem = (t_fix2 + MEMBRANE_COLLECTIVES * math.log2(p) * alpha
-                     + 1e3 * r2["membrane_kb_per_step"] / beta
-                     + r2["detections_per_1000"] / 1000 * (1e3 * r2["membrane_kb_per_detection"] / beta))
-            t_rigid = t_calc + t_halo + t_coll
-            e_rigid = 1e-6 * r1["us_rigid"] * n / (p * t_rigid)
-            e_mem = 1e-6 * r1["us_rigid"] * n / (p * (t_rigid + t_mem))
+            volume = 1e3 * r2["membrane_kb_per_step"] + r2["detections_per_1000"] / 1000 * (
+                1e3 * r2["membrane_kb_per_detection"])
+            t_calc, t_halo, t_coll, t_mem, e_rigid, e_mem = efficiency(
+                p, (alpha, beta), 1e-6 * r1["us_rigid"] * n, ghosts, HALO_MESSAGES, t_fix2, volume)
             lines.append(f"| {net} | {p} | {n // p} | {1e3 * t_calc:.3g} | {1e3 * t_halo:.2g} | "
                          f"{1e3 * t_coll:.2g} | {1e3 * t_mem:.2g} | {100 * e_rigid:.0f} % | {100 * e_mem:.0f} % |")
     text = (f"Assumed: the work of a step, {r1['us_rigid']:.3g} us per particle-step (rigid shear, "
