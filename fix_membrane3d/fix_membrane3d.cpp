@@ -23,7 +23,6 @@
 #include "update.h"
 
 #include "atom_faults.h"
-#include "membrane_part.h"
 #include "membrane3d_messages.h"
 #include "membrane3d_record.h"
 #include "membrane3d_skin.h"
@@ -258,8 +257,10 @@ void FixMembrane3d::place_and_apply()
   using namespace membrane3d;
   MembranePart part;
   try {
-    part = place_part(topology, halo.cells(), halo.plan().owned, halo.plan().needed, near,
-                      platens, pressure, Vertices::outer_faces);
+    if (layout_plan != halo.plans_made)
+      layout = part_layout(topology, halo.cells(), halo.plan().owned, halo.plan().needed);
+    layout_plan = halo.plans_made;
+    part = place_part(layout, near, platens, pressure, Vertices::outer_faces);
   } catch (const std::exception &e) {
     fail(std::string(e.what()) + "; the membrane found at the last detection cannot be placed");
   }
@@ -279,7 +280,7 @@ void FixMembrane3d::place_and_apply()
   if (!open_loads.empty()) fail(open_loads);
   std::array<double, PART_SUMS> whole;
   std::copy_n(sum.begin(), PART_SUMS, whole.begin());
-  add_part_escapes(part, halo.plan().owned, halo.plan().needed, near, whole, pressure);
+  add_part_escapes(part, layout, near, whole, pressure);
 
   double **f = atom->f;
   for (std::size_t k = 0; k < part.load.size(); k++)
@@ -322,8 +323,7 @@ void FixMembrane3d::write_frame()
 double FixMembrane3d::compute_vector(int n)
 {
   if ((n == VOLUME || n == EQUIVALENT_RADIUS) && !centres_placed && !topology.facets.empty()) {
-    double sum = membrane3d::place_part(topology, halo.cells(), halo.plan().owned,
-                                        halo.plan().needed, near, platens, pressure,
+    double sum = membrane3d::place_part(layout, near, platens, pressure,
                                         membrane3d::Vertices::centres)
                      .sums[membrane3d::VOLUME_SUM];
     MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, world);

@@ -33,6 +33,7 @@ FixStyle(membrane3d,FixMembrane3d)
 #include "membrane3d_traffic.h"
 #include "membrane_fix.h"
 #include "member_halo.h"
+#include "membrane_part.h"
 
 namespace LAMMPS_NS {
 
@@ -87,6 +88,8 @@ class FixMembrane3d : public MembraneFix {
   // placement: the members within two rings of this rank's own (member_halo.h), now
   MemberHalo halo{lmp, 4, 2};
   std::vector<membrane3d::Sphere> near; // halo.plan().needed's
+  membrane3d::PartLayout layout;         // what this rank places, for halo.plans_made:
+  double layout_plan = -1.0;
   bigint halo_step = -1;                // refreshed for this step
   double halo_detections = -1.0;        // ... and this topology
   bigint halo_detected = -1;

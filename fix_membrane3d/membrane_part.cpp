@@ -45,40 +45,54 @@ MembraneTopology renumbered(const MembraneTopology &topology, const std::vector<
 
 } // namespace
 
-MembranePart place_part(const MembraneTopology &topology, const membrane::MemberCells &cells,
-                        const std::vector<int> &owned, const std::vector<int> &needed,
-                        const std::vector<Sphere> &at, const Platens &platens, double p,
-                        Vertices vertices)
+PartLayout part_layout(const MembraneTopology &topology, const membrane::MemberCells &cells,
+                       const std::vector<int> &owned, const std::vector<int> &needed,
+                       Vertices vertices)
 {
-  if (at.size() != needed.size())
-    throw std::invalid_argument("a part of " + std::to_string(needed.size()) + " members with " +
-                                std::to_string(at.size()) + " spheres");
+  PartLayout layout;
+  layout.outer_faces = vertices == Vertices::outer_faces;
+  const std::vector<int> near_facets = cells.cells_on(owned); // the facets on owned members
+  layout.near = renumbered(topology, near_facets, needed);
+  // the members one ring away: the offsets of their facets' corners need every facet on
+  // them
+  std::vector<int> ring(owned);
+  for (int f : near_facets)
+    for (const MembraneVertex &v : topology.facets[f]) ring.push_back(v.sphere);
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  for (int m : owned) layout.owned_slots.push_back(slot_of(needed, m));
+  for (int f : near_facets)
+    layout.counted.push_back(
+        std::binary_search(owned.begin(), owned.end(), topology.facets[f][0].sphere));
+  if (!layout.outer_faces) return layout;
+  for (int m : ring) layout.ring_slots.push_back(slot_of(needed, m));
+  layout.around = renumbered(topology, cells.cells_on(ring), needed);
+  return layout;
+}
+
+MembranePart place_part(const PartLayout &layout, const std::vector<Sphere> &at,
+                        const Platens &platens, double p, Vertices vertices)
+{
+  if (at.size() != layout.near.side.size())
+    throw std::invalid_argument("a part of " + std::to_string(layout.near.side.size()) +
+                                " members with " + std::to_string(at.size()) + " spheres");
   MembranePart part;
   std::vector<Eigen::Vector3d> vertex(at.size());
   for (std::size_t k = 0; k < at.size(); ++k) vertex[k] = at[k].x;
-  const std::vector<int> near_facets = cells.cells_on(owned); // the facets on owned members
-  const MembraneTopology near = renumbered(topology, near_facets, needed);
   if (vertices == Vertices::outer_faces) {
-    // the offsets of the members one ring away: every facet on them
-    std::vector<int> ring(owned);
-    for (int f : near_facets)
-      for (const MembraneVertex &v : topology.facets[f]) ring.push_back(v.sphere);
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    const std::vector<Eigen::Vector3d> o = outer_face_offsets_unchecked(
-        renumbered(topology, cells.cells_on(ring), needed), at, platens);
-    for (int m : ring) {
-      const int k = slot_of(needed, m);
-      vertex[k] += o[k];
-    }
+    if (!layout.outer_faces)
+      throw std::invalid_argument("a part laid out for the centres placed on the outer faces");
+    const std::vector<Eigen::Vector3d> o = outer_face_offsets_unchecked(layout.around, at, platens);
+    for (int k : layout.ring_slots) vertex[k] += o[k];
   }
   std::vector<int> origin;
-  const LateralSurface placed = clip_membrane(near, vertex, platens, &origin);
-  const std::vector<Eigen::Vector3d> load = membrane_loads(placed, needed.size(), p);
+  const LateralSurface placed = clip_membrane(layout.near, vertex, platens, &origin);
+  const std::vector<Eigen::Vector3d> load = membrane_loads(placed, at.size(), p);
 
   std::array<double, PART_SUMS> &sum = part.sums;
-  for (int m : owned) {
-    const int k = slot_of(needed, m);
+  part.load.reserve(layout.owned_slots.size());
+  part.side.reserve(layout.owned_slots.size());
+  for (int k : layout.owned_slots) {
     part.load.push_back(load[k]);
     part.side.push_back(placed.side[k]);
     sum[ON_SURFACE] += placed.side[k] == Side::surface;
@@ -88,11 +102,10 @@ MembranePart place_part(const MembraneTopology &topology, const membrane::Member
     sum[NET_Z] += load[k].z();
     sum[MAGNITUDE] += load[k].norm();
   }
-  // own facets: the first vertex's sphere owned (lateral_volume, membrane_axis)
+  // the facets counted here (lateral_volume, membrane_axis)
   const Surface &s = placed.surface;
   for (std::size_t t = 0; t < s.facets.size(); ++t) {
-    const int first = topology.facets[near_facets[origin[t]]][0].sphere;
-    if (!std::binary_search(owned.begin(), owned.end(), first)) continue;
+    if (!layout.counted[origin[t]]) continue;
     const auto &f = s.facets[t];
     const Eigen::Vector3d &a = s.points[f[0]], &b = s.points[f[1]], &c = s.points[f[2]];
     const Eigen::Vector3d area = facet_vector_area(a, b, c);
@@ -112,8 +125,16 @@ MembranePart place_part(const MembraneTopology &topology, const membrane::Member
   return part;
 }
 
-void add_part_escapes(MembranePart &part, const std::vector<int> &owned,
-                      const std::vector<int> &needed, const std::vector<Sphere> &at,
+MembranePart place_part(const MembraneTopology &topology, const membrane::MemberCells &cells,
+                        const std::vector<int> &owned, const std::vector<int> &needed,
+                        const std::vector<Sphere> &at, const Platens &platens, double p,
+                        Vertices vertices)
+{
+  return place_part(part_layout(topology, cells, owned, needed, vertices), at, platens, p,
+                    vertices);
+}
+
+void add_part_escapes(MembranePart &part, const PartLayout &layout, const std::vector<Sphere> &at,
                       const std::array<double, PART_SUMS> &whole, double p)
 {
   if (!(whole[ESCAPED] > 0)) return;
@@ -121,9 +142,9 @@ void add_part_escapes(MembranePart &part, const std::vector<int> &owned,
                                    ? Eigen::Vector2d(Eigen::Vector2d(whole[AXIS_X], whole[AXIS_Y]) /
                                                      whole[AREA])
                                    : Eigen::Vector2d::Zero();
-  for (std::size_t k = 0; k < owned.size(); ++k)
+  for (std::size_t k = 0; k < layout.owned_slots.size(); ++k)
     if (part.side[k] == Side::outside)
-      part.load[k] += escape_push(at[slot_of(needed, owned[k])], axis, p);
+      part.load[k] += escape_push(at[layout.owned_slots[k]], axis, p);
 }
 
 } // namespace membrane3d

@@ -47,15 +47,36 @@ enum PartSum {
 membrane::MemberCells facet_cells(const MembraneTopology &topology);
 
 struct MembranePart {
-  std::vector<Eigen::Vector3d> load; // per owned member (plan.owned): the membrane's
+  std::vector<Eigen::Vector3d> load; // per owned member: the membrane's
   std::vector<Side> side;            // per owned member
   std::array<double, PART_SUMS> sums{};
 };
 
-// The part of the members `owned` (ascending) with the spheres `at` of the members
-// `needed` (ascending; a superset of those within two rings of owned, one ring with
-// Vertices::centres). Throws std::invalid_argument for a facet on an owned member whose
-// sphere is not in `needed`.
+// What a part places, over the positions of `needed` (slots): made once per topology
+// and owners, used every step.
+struct PartLayout {
+  MembraneTopology near;       // the facets on owned members, in order
+  MembraneTopology around;     // the facets on the members one ring away, in order
+  std::vector<int> ring_slots; // those members (whose outer-face offsets are exact)
+  std::vector<int> owned_slots;
+  std::vector<char> counted;   // per facet of near: its first vertex's sphere owned
+  bool outer_faces = true;     // around and ring_slots made (else centres only)
+};
+
+// The layout of the members `owned` (ascending) with the spheres of the members `needed`
+// (ascending; a superset of those within two rings of owned, one ring with
+// for a layout of Vertices::centres only). Throws std::invalid_argument for a facet on
+// an owned member whose sphere is not in `needed`.
+PartLayout part_layout(const MembraneTopology &topology, const membrane::MemberCells &cells,
+                       const std::vector<int> &owned, const std::vector<int> &needed,
+                       Vertices vertices = Vertices::outer_faces);
+
+// The part placed on the spheres `at` of the layout's needed members (outer faces: a
+// layout of outer faces, else std::invalid_argument).
+MembranePart place_part(const PartLayout &layout, const std::vector<Sphere> &at,
+                        const Platens &platens, double p, Vertices vertices);
+
+// part_layout and place_part at once.
 MembranePart place_part(const MembraneTopology &topology, const membrane::MemberCells &cells,
                         const std::vector<int> &owned, const std::vector<int> &needed,
                         const std::vector<Sphere> &at, const Platens &platens, double p,
@@ -63,8 +84,7 @@ MembranePart place_part(const MembraneTopology &topology, const membrane::Member
 
 // The escape pushes of the part's escaped members towards the axis of the whole (from the
 // summed AXIS_X, AXIS_Y, AREA), added to part.load.
-void add_part_escapes(MembranePart &part, const std::vector<int> &owned,
-                      const std::vector<int> &needed, const std::vector<Sphere> &at,
+void add_part_escapes(MembranePart &part, const PartLayout &layout, const std::vector<Sphere> &at,
                       const std::array<double, PART_SUMS> &whole, double p);
 
 } // namespace membrane3d

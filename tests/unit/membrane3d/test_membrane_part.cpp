@@ -93,7 +93,8 @@ void expect_parts_give_whole(const Whole &w, const std::vector<int> &owner, int 
     const membrane::HaloPlan &plan = plans[r];
     std::vector<Sphere> given;
     for (int m : plan.needed) given.push_back(w.members[m]);
-    add_part_escapes(parts[r], plan.owned, plan.needed, given, total, p);
+    add_part_escapes(parts[r], membrane3d::part_layout(w.topology, cells, plan.owned, plan.needed, at),
+                     given, total, p);
     for (std::size_t k = 0; k < plan.owned.size(); ++k)
       for (int d = 0; d < 3; ++d)
         EXPECT_NEAR(parts[r].load[k][d], w.load[plan.owned[k]][d],
