@@ -1,12 +1,13 @@
 /* ----------------------------------------------------------------------
    fix membrane3d: see fix_membrane3d.h and doc/fix_membrane3d.md
 
-   A detection: every rank gathers the same spheres in the same order
-   (membrane3d_gather.h) and finds the same membrane, whatever the number of
-   ranks and the processor grid. Each step each rank places the facets on the
-   members it owns from the members within two rings of them (member_halo.h,
-   membrane_part.h): their loads are the whole membrane's to the last bit; the
-   global sums (volumes, forces, counts) are its facets' shares, reduced.
+   A detection is made from a skin of the spheres that every rank gathers alike,
+   certified by each rank on its own spheres (membrane3d_distributed.h), whatever
+   the number of ranks and the processor grid. Each step each rank places the
+   facets on the members it owns from the members within two rings of them
+   (member_halo.h, membrane_part.h): their loads are the whole membrane's to the
+   last bit; the global sums (volumes, forces, counts) are its facets' shares,
+   reduced.
 ------------------------------------------------------------------------- */
 
 #include "fix_membrane3d.h"
@@ -14,6 +15,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -25,7 +27,7 @@
 #include "atom_faults.h"
 #include "membrane3d_messages.h"
 #include "membrane3d_record.h"
-#include "membrane3d_skin.h"
+#include "membrane3d_distributed.h"
 #include "membrane3d_tuning.h"
 #include "owned_atom.h"
 #include "membrane3d_vtk.h"
@@ -55,6 +57,10 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
   parse(narg, arg, {}, [](StyleArgs &, const std::string &) { return false; });
   size_vector = OUTPUT_SIZE;
   halo.received = &traffic.received;
+  pack = [this](int i, double *out) {
+    for (int d = 0; d < 3; d++) out[d] = atom->x[i][d];
+    out[3] = atom->radius[i];
+  };
   std::fill(output, output + OUTPUT_SIZE, 0.0);
 }
 
@@ -75,6 +81,7 @@ void FixMembrane3d::setup_pre_force(int vflag)
 void FixMembrane3d::setup(int vflag)
 {
   warned_rim = warned_moved = false;
+  skin_at_setup = skin_counters;
   post_force(vflag);
 }
 
@@ -82,6 +89,12 @@ void FixMembrane3d::setup(int vflag)
 // unfix or a run without this fix see the true sample)
 void FixMembrane3d::post_run()
 {
+  // the skin's certificates failed or its last resort was taken: said on rank 0
+  const std::string note = membrane3d::skin_run_note(skin_counters - skin_at_setup);
+  if (!note.empty() && comm->me == 0) {
+    if (screen) std::fprintf(screen, "%s%s\n", prefix.c_str(), note.c_str());
+    if (logfile) std::fprintf(logfile, "%s%s\n", prefix.c_str(), note.c_str());
+  }
   types.restore();
   remember_group(group_checksum());
   traffic.report(lmp, prefix, id, update->ntimestep, detections);
@@ -110,21 +123,13 @@ void FixMembrane3d::pre_force(int)
     return;
   }
   // the member farthest from where it was found (the first in member order of a tie)
-  struct {
-    double moved;
-    int member;
-  } most{0.0, 0};
-  for (std::size_t k = 0; k < halo.owned_atoms().size(); k++) {
-    const int m = halo.plan().owned[k];
-    const double *x = atom->x[halo.owned_atoms()[k]];
-    const double moved = (Eigen::Vector3d(x[0], x[1], x[2]) - detected_at[m].x).norm();
-    if (moved > most.moved || (moved == most.moved && m < most.member)) most = {moved, m};
-  }
-  MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  if (!(most.moved > tolerance)) return;
+  const std::pair<double, int> most = halo.farthest([this](int m, int i) {
+    return (Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]) - detected_at[m].x).norm();
+  });
+  if (!(most.first > tolerance)) return;
   // that member at that distance from where it was found
   membrane3d::GatheredSpheres farthest{
-      {member_tags[most.member]}, {{Eigen::Vector3d(most.moved, 0, 0), 0.0}}, {}};
+      {member_tags[most.second]}, {{Eigen::Vector3d(most.first, 0, 0), 0.0}}, {}};
   std::vector<membrane3d::Sphere> found{{Eigen::Vector3d::Zero(), 0.0}};
   const std::string moved =
       membrane3d::moved_warning(farthest, found, tolerance, last_detection, update->ntimestep);
@@ -205,20 +210,36 @@ void FixMembrane3d::wear_types(const GatheredSpheres &g)
   types.wear(on_tags, on_types);
 }
 
+// every auto's watch is built from all the group's spheres; any other detection is
+// made from a skin (membrane3d_distributed.h). `found` gets the spheres it was made
+// from, sorted by ID: the members among them.
 void FixMembrane3d::detect()
 {
-  GatheredSpheres all;
-  gather().group(all);
-  const std::string few =
-      membrane3d::too_few_spheres(group->names[igroup], all.spheres.size(), update->ntimestep);
+  const bigint step = update->ntimestep;
+  const bool watch = shared.automatic() && automatic.builds_watch(step);
+  GatheredSpheres found;
+  Membrane3dGather::Totals totals;
+  if (watch) {
+    gather().group(found);
+    totals.atoms = static_cast<double>(found.spheres.size());
+  } else {
+    totals = gather().totals();
+  }
+  const std::string few = membrane3d::too_few_spheres(
+      group->names[igroup], static_cast<std::size_t>(totals.atoms), step);
   if (!few.empty()) fail(few);
   std::vector<int> index;
   try {
-    topology = membrane3d::members_only(
-        shared.automatic()
-            ? automatic.detect(all, member_tags, platens, tolerance, d50, update->ntimestep)
-            : membrane3d::detect_near_members(all, member_tags, platens, tolerance),
-        index);
+    if (watch) {
+      topology = membrane3d::members_only(
+          automatic.detect(found, member_tags, platens, tolerance, d50, step), index);
+    } else {
+      if (shared.automatic()) automatic.unwatched(platens);
+      const membrane3d::MembraneTopology of_skin = membrane3d::detect_distributed(
+          gather(), member_tags, tolerance, totals, found, skin_counters);
+      traffic.received += skin_counters.last_bytes; // its gathers count them there
+      topology = membrane3d::members_only(of_skin, index);
+    }
     if (shared.automatic()) automatic.set_members(index);
   } catch (const membrane3d::FlatSample &e) {
     fail(std::string(e.what()) +
@@ -227,11 +248,11 @@ void FixMembrane3d::detect()
     fail(std::string(e.what()) + "; the group must be one packing whose spheres are linked "
                                  "(gaps within the tolerance)");
   }
-  members = membrane3d::subset(all, index);
+  members = membrane3d::subset(found, index);
   member_tags = members.tags;
   detected_at = members.spheres;
-  wear_types(all);
-  last_detection = update->ntimestep;
+  wear_types(found);
+  last_detection = step;
   detected_platens = platens;
   detections += 1.0;
   check_ranks_agree(lmp, prefix, member_tags, topology.facets.size());
@@ -244,12 +265,7 @@ void FixMembrane3d::place_and_apply()
          std::to_string(halo.present()) +
          "; the membrane found at the last detection cannot be placed");
   std::vector<double> records;
-  halo.exchange(
-      [this](int i, double *out) {
-        for (int d = 0; d < 3; d++) out[d] = atom->x[i][d];
-        out[3] = atom->radius[i];
-      },
-      records);
+  halo.exchange(pack, records);
   near.resize(halo.plan().needed.size());
   for (std::size_t k = 0; k < near.size(); k++)
     near[k] = {Eigen::Vector3d(records[4 * k], records[4 * k + 1], records[4 * k + 2]),
@@ -303,12 +319,7 @@ void FixMembrane3d::place_and_apply()
 void FixMembrane3d::write_frame()
 {
   std::vector<double> all;
-  halo.gather_on_root(
-      [this](int i, double *out) {
-        for (int d = 0; d < 3; d++) out[d] = atom->x[i][d];
-        out[3] = atom->radius[i];
-      },
-      all);
+  halo.gather_on_root(pack, all);
   if (comm->me != 0) return;
   std::vector<membrane3d::Sphere> spheres(member_tags.size());
   for (std::size_t k = 0; k < spheres.size(); k++)

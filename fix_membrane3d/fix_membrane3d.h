@@ -24,8 +24,10 @@ FixStyle(membrane3d,FixMembrane3d)
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
+#include "distributed_skin.h"
 #include "gathered_spheres.h"
 #include "lateral_surface.h"
 #include "membrane3d_auto.h"
@@ -71,7 +73,11 @@ class FixMembrane3d : public MembraneFix {
   void restart(char *) override;
   double memory_usage() override;
 
+  // the detections from a skin: rounds, last resorts, bytes gathered (for the benchmarks)
+  membrane3d::SkinCounters skin_counters;
+
  private:
+  membrane3d::SkinCounters skin_at_setup; // skin_counters at this run's setup
   membrane3d::Membrane3dAuto automatic; // every auto
 
   // the last detection: its topology over the member atoms, their IDs, its step
@@ -90,6 +96,7 @@ class FixMembrane3d : public MembraneFix {
   std::vector<membrane3d::Sphere> near; // halo.plan().needed's
   membrane3d::PartLayout layout;         // what this rank places, for halo.plans_made:
   double layout_plan = -1.0;
+  std::function<void(int, double *)> pack; // a member's record: position, radius
   bigint halo_step = -1;                // refreshed for this step
   double halo_detections = -1.0;        // ... and this topology
   bigint halo_detected = -1;

@@ -150,8 +150,10 @@ void check_platens(const std::vector<Sphere> &spheres, const Platens &p)
 }
 
 // The topology of the boundary of the spheres' flood with their images `m`.
+// The checks and messages count the group's n_spheres, the sides are of the first
+// n_skin (all of them but for a skin, whose left-out spheres are inside).
 MembraneTopology topology_of(const Boundary &boundary, const Mirrored &m, std::size_t n_spheres,
-                             double tolerance)
+                             double tolerance, std::size_t n_skin)
 {
   if (boundary.facets.empty())
     throw std::runtime_error("no surface: no facet of links between the platens separates the " +
@@ -161,7 +163,7 @@ MembraneTopology topology_of(const Boundary &boundary, const Mirrored &m, std::s
   // a membrane that leaves most spheres outside wraps no sample: a shell one sphere
   // thick whose ends are open to the flood, spheres scattered beyond the tolerance
   const auto outside = static_cast<std::size_t>(
-      std::count(boundary.side.begin(), boundary.side.begin() + n_spheres, Side::outside));
+      std::count(boundary.side.begin(), boundary.side.begin() + n_skin, Side::outside));
   if (2 * outside > n_spheres)
     throw std::runtime_error("only " + std::to_string(n_spheres - outside) + " of the " +
                              count_text(n_spheres, "sphere", "spheres") +
@@ -175,7 +177,7 @@ MembraneTopology topology_of(const Boundary &boundary, const Mirrored &m, std::s
     for (int j = 0; j < 3; ++j) facet[j] = {m.original[f[j]], m.image[f[j]]};
     t.facets.push_back(facet);
   }
-  t.side.assign(boundary.side.begin(), boundary.side.begin() + n_spheres);
+  t.side.assign(boundary.side.begin(), boundary.side.begin() + n_skin);
   return t;
 }
 
@@ -189,7 +191,7 @@ MembraneTopology detect_membrane(const std::vector<Sphere> &spheres, const Plate
   Mirrored &m = mirrored ? *mirrored : own;
   m = mirror_in_platens(spheres, platens, tolerance);
   return topology_of(exterior_boundary(m.spheres, m.sealed, tolerance, cells), m, spheres.size(),
-                     tolerance);
+                     tolerance, spheres.size());
 }
 
 MembraneTopology detect_membrane_near(const std::vector<Sphere> &spheres, const Platens &platens,
@@ -205,7 +207,13 @@ MembraneTopology detect_membrane_near(const std::vector<Sphere> &spheres, const 
   const bool skin = skin_boundary(m.spheres, m.sealed, tolerance, keep, boundary);
   if (!skin) boundary = exterior_boundary(m.spheres, m.sealed, tolerance);
   if (from_skin) *from_skin = skin;
-  return topology_of(boundary, m, spheres.size(), tolerance);
+  return topology_of(boundary, m, spheres.size(), tolerance, spheres.size());
+}
+
+MembraneTopology skin_topology(const Boundary &boundary, const Mirrored &m, std::size_t n_skin,
+                               std::size_t n_group, double tolerance)
+{
+  return topology_of(boundary, m, n_group, tolerance, n_skin);
 }
 
 MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members)

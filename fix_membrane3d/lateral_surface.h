@@ -86,6 +86,13 @@ MembraneTopology detect_membrane_near(const std::vector<Sphere> &spheres, const 
                                       double tolerance, const std::vector<int> &seeds,
                                       double thickness, bool *from_skin = nullptr);
 
+// The topology of the boundary of a skin's flood shown to be the group's (skin_flood.h),
+// the skin of n_skin spheres mirrored in `m` (mirror_in_band, the band of the group's
+// n_group spheres): that of detect_membrane on the group, over the skin's spheres
+// (the others are inside), with its errors and their counts.
+MembraneTopology skin_topology(const Boundary &boundary, const Mirrored &m, std::size_t n_skin,
+                               std::size_t n_group, double tolerance);
+
 // The topology over its members only: the spheres on a facet or outside, renumbered in
 // their order; `members` gets their indices in the detection's spheres.
 MembraneTopology members_only(const MembraneTopology &topology, std::vector<int> &members);

@@ -25,14 +25,21 @@ MembraneTopology Membrane3dAuto::detect(const GatheredSpheres &all,
                                         const std::vector<AtomId> &member_tags, const Platens &at,
                                         double tolerance, double d50, long long step)
 {
-  platens = at;
-  if (dense.unwatched(step)) { // no watch, and none to build again after a restart
-    built = false;
-    sample = GatheredSpheres();
+  if (dense.unwatched(step)) {
+    unwatched(at);
     return detect_near_members(all, member_tags, platens, tolerance);
   }
+  platens = at;
   sample = all;
   return build(tolerance, d50);
+}
+
+// no watch, and none to build again after a restart
+void Membrane3dAuto::unwatched(const Platens &at)
+{
+  platens = at;
+  built = false;
+  sample = GatheredSpheres();
 }
 
 // The watch of the sample's detection, its budget from the group's D50 (the same on

@@ -48,6 +48,11 @@ class Membrane3dAuto {
   // the watch's budget in WATCH_BUDGET.
   MembraneTopology detect(const GatheredSpheres &all, const std::vector<AtomId> &member_tags,
                           const Platens &platens, double tolerance, double d50, long long step);
+  // Whether this step's detection builds the watch (from all the group's spheres, with
+  // detect); when not, the caller detects from the skin and calls unwatched().
+  bool builds_watch(long long step) const { return !dense.unwatched(step); }
+  // A detection without the watch (dense schedule), at these platens.
+  void unwatched(const Platens &at);
   // its members (indices into all, ascending: members_only)
   void set_members(const std::vector<int> &members);
 

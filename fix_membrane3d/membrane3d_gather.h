@@ -23,6 +23,20 @@ struct Membrane3dGather {
   membrane3d::Platens platens; // this step's
   double *received = nullptr;  // the bytes received in the gathers are added here
 
+  // The group's count and measures (collective). Each rank checks its own atoms as a
+  // gather does: the lowest ID failing stops the run with its message on every rank.
+  struct Totals {
+    double atoms = 0, diameter_sum = 0, r_max = 0;
+    double x_sum = 0, y_sum = 0, z_lo = 0, z_hi = 0; // of the centres
+    double mean_diameter() const { return atoms > 0 ? diameter_sum / atoms : 0.0; }
+  };
+  Totals totals() const;
+  // This rank's atoms of the group: their local indices, spheres and IDs.
+  void own(std::vector<int> &index, std::vector<membrane3d::Sphere> &spheres,
+           std::vector<AtomId> &tags) const;
+  // The atoms with these local indices of every rank, sorted by ID (as group()).
+  void some(const std::vector<int> &index, membrane3d::GatheredSpheres &out) const;
+
   // Every atom of the group.
   void group(membrane3d::GatheredSpheres &out) const;
   // The atoms of the group with these IDs (ascending), and their count: the caller

@@ -1,4 +1,6 @@
-// fix membrane3d's detection from the skin of its last membrane (skin_flood.h): the
+// The detection from the skin of the last membrane (skin_flood.h) on one process, with
+// all the spheres at hand (every auto's detect, the tests; fix membrane3d itself
+// gathers the skin only: membrane3d_distributed.h): the
 // membrane of all the group's spheres, found from those within SKIN_THICKNESS mean
 // diameters of the last detection's members (at a run's first detection: of the
 // outermost spheres) when they show it to be the same, else from all of them. No

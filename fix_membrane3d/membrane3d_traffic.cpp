@@ -29,7 +29,7 @@ void Membrane3dTraffic::report(LAMMPS *lmp, const std::string &prefix, const cha
   char text[600];
   std::snprintf(text, sizeof(text),
                 "%seach rank received %.3g kB per step (the member spheres) and %.3g kB per "
-                "detection (the group's spheres) over %lld steps with %lld detections; the fix "
+                "detection (its skin of spheres) over %lld steps with %lld detections; the fix "
                 "took %.3g s, its detections %.3g s (slowest rank)\n"
                 "membrane3d_traffic id=%s kb_per_step=%.6g kb_per_detection=%.6g steps=%lld "
                 "detections=%lld fix_seconds=%.6g detection_seconds=%.6g\n",

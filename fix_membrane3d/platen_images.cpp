@@ -27,14 +27,19 @@ double image_band(const std::vector<Sphere> &spheres, double tolerance)
 {
   double r_max = 0;
   for (const Sphere &s : spheres) r_max = std::max(r_max, s.r);
-  return 3 * (2 * r_max + tolerance);
+  return image_band(r_max, tolerance);
 }
 
 Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
                            double tolerance)
 {
+  return mirror_in_band(spheres, platens, image_band(spheres, tolerance));
+}
+
+Mirrored mirror_in_band(const std::vector<Sphere> &spheres, const Platens &platens, double band)
+{
   Mirrored m;
-  m.band = image_band(spheres, tolerance);
+  m.band = band;
   m.grid = height_grid(platens, m.band);
   auto add = [&m, &platens](const Sphere &s, int i, int image) {
     m.spheres.push_back({mirrored_position(s.x, image, platens, m.grid), s.r});

@@ -44,6 +44,11 @@ Eigen::Vector3d mirrored_position(const Eigen::Vector3d &x, int image, const Pla
 
 // The distance from a platen within which a sphere has an image: 3 (2 r_max + T).
 double image_band(const std::vector<Sphere> &spheres, double tolerance);
+// The band of spheres whose largest radius is r_max.
+inline double image_band(double r_max, double tolerance)
+{
+  return 3 * (2 * r_max + tolerance);
+}
 
 // Whether a sphere centred at height z has an image in the lower / upper platen.
 inline bool imaged_below(double z, const Platens &p, double band)
@@ -67,6 +72,10 @@ struct Mirrored {
 
 Mirrored mirror_in_platens(const std::vector<Sphere> &spheres, const Platens &platens,
                            double tolerance);
+
+// mirror_in_platens with the band given: a part of the spheres mirrored with the band of
+// them all (a skin's, membrane3d_distributed.h) is the part of their Mirrored, in order.
+Mirrored mirror_in_band(const std::vector<Sphere> &spheres, const Platens &platens, double band);
 
 } // namespace membrane3d
 

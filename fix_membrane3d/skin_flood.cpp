@@ -198,6 +198,153 @@ std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::ve
   return near;
 }
 
+struct SkinShell::Impl {
+  std::vector<Sphere> skin;
+  std::vector<bool> sealed;
+  std::unique_ptr<PowerFlood> flood; // none: not usable
+  std::vector<Cell> shell_cells;     // the finite ones
+};
+
+SkinShell::SkinShell(std::vector<Sphere> skin, std::vector<bool> sealed, double tolerance)
+  : impl_(std::make_unique<Impl>())
+{
+  Impl &m = *impl_;
+  m.skin = std::move(skin);
+  m.sealed = std::move(sealed);
+  if (m.skin.size() < 4) return;
+  check_flood_input(m.skin, m.sealed, tolerance);
+  try {
+    m.flood = std::make_unique<PowerFlood>(m.skin, m.sealed, tolerance);
+  } catch (const FlatSample &) {
+    return; // a flat skin says nothing of the whole
+  }
+  const PowerFlood &flood = *m.flood;
+  const power::Triangulation &t = flood.triangulation();
+  // the dry cells next to flooded ones (the sample's group's shell)
+  long shell = 0;
+  int flat_cells = 0;
+  for (Cell c : flood.cells()) {
+    if (flood.flooded(c)) continue;
+    bool near = false;
+    for (int k = 0; k < 4 && !near; ++k) near = flood.flooded(c->neighbor(k));
+    if (!near) continue;
+    if (!flood.all_sealed(c)) ++shell;
+    if (t.is_infinite(c)) continue;
+    m.shell_cells.push_back(c);
+    flat_cells += power_reach(c, 0.0).flat;
+  }
+  if (shell <= flood.other_group() || flat_cells > kMostFlatCells) {
+    m.shell_cells.clear();
+    m.flood.reset();
+  }
+}
+
+SkinShell::~SkinShell() = default;
+
+bool SkinShell::usable() const
+{
+  return impl_->flood != nullptr;
+}
+
+std::vector<int> SkinShell::failing(const std::vector<Sphere> &left,
+                                    const std::vector<bool> &sealed, bool first_only) const
+{
+  check_spheres(left);
+  if (sealed.size() != left.size())
+    throw std::invalid_argument("sealed flags for " + std::to_string(sealed.size()) + " of " +
+                                std::to_string(left.size()) + " spheres");
+  std::vector<int> out;
+  if (!usable()) {
+    for (std::size_t i = 0; i < left.size() && !(first_only && !out.empty()); ++i)
+      out.push_back(static_cast<int>(i));
+    return out;
+  }
+  if (left.empty()) return out;
+  const PowerFlood &flood = *impl_->flood;
+  const power::Triangulation &t = flood.triangulation();
+  std::vector<char> failed(left.size(), 0);
+  double r_max = 0;
+  for (const Sphere &s : left) r_max = std::max(r_max, s.r);
+  std::vector<int> all(left.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const SphereGrid grid(left, all, 2 * r_max);
+  Cell hint;
+  for (int i : grid.in_cube_order()) {
+    power::Triangulation::Locate_type type;
+    int li = 0, lj = 0;
+    const power::K::Weighted_point_3 p = power::weighted_point(left[i]);
+    const Cell c = t.locate(p, type, li, lj, hint);
+    hint = c;
+    if (type == power::Triangulation::CELL && !flood.flooded(c)) continue;
+    if (type == power::Triangulation::OUTSIDE_CONVEX_HULL && sealed[i] &&
+        hidden_beyond_hull(flood, c, p))
+      continue;
+    if (first_only) return {i};
+    failed[i] = 1;
+  }
+  for (Cell c : impl_->shell_cells) {
+    const auto test = [&](int i) {
+      if (failed[i] ||
+          t.side_of_power_sphere(c, power::weighted_point(left[i])) == CGAL::ON_UNBOUNDED_SIDE)
+        return false;
+      failed[i] = 1;
+      return true;
+    };
+    const PowerReach p = power_reach(c, r_max);
+    if (p.flat) {
+      for (int i : all)
+        if (test(i) && first_only) return {i};
+    } else {
+      bool found = false;
+      grid.for_each_within(p.centre, p.reach, [&](int i) {
+        if (!found && p.may_reach(left[i].x, left[i].r)) found = test(i) && first_only;
+      });
+      if (found)
+        for (int i : all)
+          if (failed[i]) return {i};
+    }
+  }
+  for (std::size_t i = 0; i < left.size(); ++i)
+    if (failed[i]) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+Boundary SkinShell::boundary() const
+{
+  if (!usable()) throw std::logic_error("the boundary of a skin that shows nothing");
+  return impl_->flood->boundary(nullptr);
+}
+
+std::vector<char> near_seeds(const std::vector<Sphere> &mine, const std::vector<Sphere> &seeds,
+                             double thickness)
+{
+  if (!std::isfinite(thickness))
+    throw std::invalid_argument("skin thickness " + number_text(thickness) +
+                                ": must be finite");
+  std::vector<char> near(mine.size(), 0);
+  if (seeds.empty()) return near;
+  double seed_r = 0;
+  for (const Sphere &s : seeds) seed_r = std::max(seed_r, s.r);
+  std::vector<int> all(seeds.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const SphereGrid grid(seeds, all, std::max(2 * seed_r + thickness, 1e-9 * seed_r));
+  Eigen::Vector3d lo = seeds[0].x, hi = lo;
+  for (const Sphere &s : seeds) {
+    lo = lo.cwiseMin(s.x);
+    hi = hi.cwiseMax(s.x);
+  }
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    const Sphere &m = mine[i];
+    const double reach = m.r + seed_r + thickness;
+    const Eigen::Vector3d x = m.x;
+    if ((x.array() < lo.array() - reach).any() || (x.array() > hi.array() + reach).any()) continue;
+    grid.for_each_within(x, reach, [&](int k) {
+      if (!near[i] && (seeds[k].x - x).norm() - m.r - seeds[k].r <= thickness) near[i] = 1;
+    });
+  }
+  return near;
+}
+
 bool skin_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                    double tolerance, const std::vector<char> &keep, Boundary &out)
 {
@@ -205,14 +352,13 @@ bool skin_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &
   if (keep.size() != spheres.size())
     throw std::invalid_argument("skin flags for " + std::to_string(keep.size()) + " of " +
                                 std::to_string(spheres.size()) + " spheres");
-  std::vector<Sphere> skin;
-  std::vector<bool> skin_sealed;
-  std::vector<int> skin_index, left;
-  double r_max = 0;
+  std::vector<Sphere> skin, left;
+  std::vector<bool> skin_sealed, left_sealed;
+  std::vector<int> skin_index;
   for (std::size_t i = 0; i < spheres.size(); ++i) {
-    r_max = std::max(r_max, spheres[i].r);
     if (!keep[i]) {
-      left.push_back(static_cast<int>(i));
+      left.push_back(spheres[i]);
+      left_sealed.push_back(sealed[i]);
       continue;
     }
     skin.push_back(spheres[i]);
@@ -220,68 +366,17 @@ bool skin_boundary(const std::vector<Sphere> &spheres, const std::vector<bool> &
     skin_index.push_back(static_cast<int>(i));
   }
   if (left.empty() || skin.size() < 4) return false;
-  std::unique_ptr<PowerFlood> flat_or_not;
-  try {
-    flat_or_not = std::make_unique<PowerFlood>(skin, skin_sealed, tolerance);
-  } catch (const FlatSample &) {
-    return false; // a flat skin says nothing of the whole: flood it all
-  }
-  const PowerFlood &flood = *flat_or_not;
-  const power::Triangulation &t = flood.triangulation();
-
-  // the dry cells next to flooded ones (the sample's group's shell)
-  std::vector<Cell> shell_cells;
-  long shell = 0;
-  for (Cell c : flood.cells()) {
-    if (flood.flooded(c)) continue;
-    bool near = false;
-    for (int k = 0; k < 4 && !near; ++k) near = flood.flooded(c->neighbor(k));
-    if (!near) continue;
-    if (!flood.all_sealed(c)) ++shell;
-    if (!t.is_infinite(c)) shell_cells.push_back(c);
-  }
-  if (shell <= flood.other_group()) return false;
-
-  const SphereGrid grid(spheres, left, 2 * r_max);
-  Cell hint;
-  for (int i : grid.in_cube_order()) {
-    power::Triangulation::Locate_type type;
-    int li = 0, lj = 0;
-    const power::K::Weighted_point_3 p = power::weighted_point(spheres[i]);
-    const Cell c = t.locate(p, type, li, lj, hint);
-    hint = c;
-    if (type == power::Triangulation::CELL && !flood.flooded(c)) continue;
-    if (type != power::Triangulation::OUTSIDE_CONVEX_HULL || !sealed[i] ||
-        !hidden_beyond_hull(flood, c, p))
-      return false;
-  }
-  int flat_cells = 0;
-  for (Cell c : shell_cells) {
-    bool conflict = false;
-    const auto test = [&](int i) {
-      conflict = conflict || t.side_of_power_sphere(c, power::weighted_point(spheres[i])) !=
-                                 CGAL::ON_UNBOUNDED_SIDE;
-    };
-    const PowerReach p = power_reach(c, r_max);
-    if (p.flat) {
-      if (++flat_cells > kMostFlatCells) return false;
-      for (int i : left) test(i);
-    } else {
-      grid.for_each_within(p.centre, p.reach, [&](int i) {
-        if (p.may_reach(spheres[i].x, spheres[i].r)) test(i);
-      });
-    }
-    if (conflict) return false;
-  }
+  const SkinShell shell(std::move(skin), std::move(skin_sealed), tolerance);
+  if (!shell.usable() || !shell.failing(left, left_sealed, true).empty()) return false;
 
   // the skin's boundary in the spheres' numbering (ascending with it: the facets keep
   // their order); every left-out sphere is inside
-  Boundary b = flood.boundary(nullptr);
+  Boundary b = shell.boundary();
   for (auto &f : b.facets)
     for (int &v : f) v = skin_index[v];
   out.facets = std::move(b.facets);
   out.side.assign(spheres.size(), Side::inside);
-  for (std::size_t k = 0; k < skin.size(); ++k) out.side[skin_index[k]] = b.side[k];
+  for (std::size_t k = 0; k < skin_index.size(); ++k) out.side[skin_index[k]] = b.side[k];
   return true;
 }
 

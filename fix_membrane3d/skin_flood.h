@@ -23,6 +23,7 @@
 
 #include "exterior_flood.h"
 
+#include <memory>
 #include <vector>
 
 namespace membrane3d {
@@ -33,6 +34,12 @@ namespace membrane3d {
 std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::vector<int> &seeds,
                                double thickness);
 
+// Which of `mine` have a gap of at most `thickness` to one of the `seeds` (the test of
+// spheres_near, for spheres and seeds given apart: a rank's own spheres, the seeds
+// gathered from all). Throws std::invalid_argument for a thickness not finite.
+std::vector<char> near_seeds(const std::vector<Sphere> &mine, const std::vector<Sphere> &seeds,
+                             double thickness);
+
 // Seeds for a detection with no last membrane to start from (a run's first): the
 // outermost spheres around the sample's axis (through the centroid of the centres, along
 // z). Around the axis the sample is cut into sectors about `diameter` wide at its
@@ -41,6 +48,41 @@ std::vector<char> spheres_near(const std::vector<Sphere> &spheres, const std::ve
 // or all spheres are triangulated); these find a sample that is not hollow.
 std::vector<int> outermost_spheres(const std::vector<Sphere> &spheres, double diameter,
                                    double depth);
+
+// The certificate in two parts, so that the left-out spheres can be tested where they
+// are (fix membrane3d: each rank its own, membrane3d_distributed.h). (a) SkinShell: the
+// skin's flood and its shell (the dry cells next to flooded ones), built alike wherever
+// the same skin is given. (b) failing(): which of a set of left-out spheres the skin
+// does not show hidden. Each sphere's tests read the skin alone (its location; its
+// conflicts with the shell cells, their candidates found from the set's own largest
+// radius), so the spheres failing in a set are those failing in its parts together,
+// and the skin holds for the whole exactly when no part has one failing.
+class SkinShell {
+ public:
+  // The skin (copied; images sealed). Not usable (nothing shown) for fewer than four
+  // spheres, a flat skin, a shell no larger than another dry group (the sample's group
+  // might not stay the largest), or more than a bound of flat shell cells.
+  SkinShell(std::vector<Sphere> skin, std::vector<bool> sealed, double tolerance);
+  ~SkinShell();
+  SkinShell(const SkinShell &) = delete;
+  SkinShell &operator=(const SkinShell &) = delete;
+
+  bool usable() const;
+  // The entries of `left` (left-out spheres, their images sealed) that could change the
+  // flood: located in a flooded cell, on a face, edge or vertex, beyond the hull where
+  // they would change it, or in conflict with a shell cell. Ascending; with
+  // `first_only`, at most one (the verdict only). All of them when not usable. Throws
+  // std::invalid_argument for a radius not positive, a centre not finite or `sealed`
+  // not one flag per sphere.
+  std::vector<int> failing(const std::vector<Sphere> &left, const std::vector<bool> &sealed,
+                           bool first_only = false) const;
+  // The skin's boundary, in its numbering (usable only).
+  Boundary boundary() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // exterior_boundary(spheres, sealed, tolerance) from the spheres with `keep` set, into
 // `out`, when that is shown to be the same (above); false, with `out` untouched, when

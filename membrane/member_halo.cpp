@@ -122,6 +122,21 @@ void MemberHalo::exchange(const std::function<void(int, double *)> &pack,
       std::copy_n(&in[k][j * width_], width_, &records[plan_.recv_slot[k][j] * width_]);
 }
 
+std::pair<double, int> MemberHalo::farthest(const std::function<double(int, int)> &distance) const
+{
+  struct {
+    double distance;
+    int member;
+  } most{0.0, 0};
+  for (std::size_t k = 0; k < owned_atoms_.size(); k++) {
+    const int m = plan_.owned[k];
+    const double d = distance(m, owned_atoms_[k]);
+    if (d > most.distance || (d == most.distance && m < most.member)) most = {d, m};
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_DOUBLE_INT, MPI_MAXLOC, lmp_->world);
+  return {most.distance, most.member};
+}
+
 void MemberHalo::gather_on_root(const std::function<void(int, double *)> &pack,
                                 std::vector<double> &records)
 {

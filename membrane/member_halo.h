@@ -17,6 +17,7 @@
 #define LIGGGHTS_MEMBRANE_MEMBER_HALO_H
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "atom_id.h"
@@ -52,6 +53,10 @@ class MemberHalo {
   // The records of plan().needed (in its order), `pack(i, out)` filling those of owned
   // atom i: point to point with the ranks of the plan.
   void exchange(const std::function<void(int, double *)> &pack, std::vector<double> &records);
+  // The owned member (index) of the largest distance(member, owned atom) over all ranks
+  // (collective; the lowest index of a tie), and that distance (0 and member 0: none).
+  std::pair<double, int> farthest(const std::function<double(int, int)> &distance) const;
+
   // Every member's record on rank 0 (in member order; empty elsewhere): output steps.
   void gather_on_root(const std::function<void(int, double *)> &pack,
                       std::vector<double> &records);
