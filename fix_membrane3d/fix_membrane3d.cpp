@@ -2,13 +2,17 @@
    fix membrane3d: see fix_membrane3d.h and doc/fix_membrane3d.md
 
    A detection is made from a skin of the spheres that every rank gathers alike,
-   certified by each rank on its own spheres (membrane3d_distributed.h); the
-   members are gathered in the same order on every rank (membrane3d_gather.h),
-   which compute the same membrane and loads, so neither depends on the number
-   of ranks or the processor grid; loads are added to owned atoms only.
+   certified by each rank on its own spheres (membrane3d_distributed.h), whatever
+   the number of ranks and the processor grid. Each step each rank places the
+   facets on the members it owns from the members within two rings of them
+   (member_halo.h, membrane_part.h): their loads are the whole membrane's to the
+   last bit; the global sums (volumes, forces, counts) are its facets' shares,
+   reduced.
 ------------------------------------------------------------------------- */
 
 #include "fix_membrane3d.h"
+
+#include <mpi.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -20,6 +24,7 @@
 #include "group.h"
 #include "update.h"
 
+#include "atom_faults.h"
 #include "membrane3d_messages.h"
 #include "membrane3d_record.h"
 #include "membrane3d_distributed.h"
@@ -51,6 +56,11 @@ FixMembrane3d::FixMembrane3d(LAMMPS *lammps, int narg, char **arg)
 {
   parse(narg, arg, {}, [](StyleArgs &, const std::string &) { return false; });
   size_vector = OUTPUT_SIZE;
+  halo.received = &traffic.received;
+  pack = [this](int i, double *out) {
+    for (int d = 0; d < 3; d++) out[d] = atom->x[i][d];
+    out[3] = atom->radius[i];
+  };
   std::fill(output, output + OUTPUT_SIZE, 0.0);
 }
 
@@ -63,6 +73,7 @@ void FixMembrane3d::setup_pre_force(int vflag)
 {
   // the group changed between two runs: its member IDs may name other spheres now
   if (!group_as_remembered()) member_tags.clear();
+  halo_step = -1; // the atoms migrated and were sorted since the last run's end
   traffic.start(update->ntimestep, detections);
   pre_force(vflag);
 }
@@ -100,10 +111,28 @@ void FixMembrane3d::pre_force(int)
     detect();
     return;
   }
-  if (!types.applied()) wear_types(members); // a run's start, after a restart write
+  // a run's start, after a restart write: the members' own types
+  if (types.type() > 0 && !types.applied()) {
+    gather().tags(member_tags, members);
+    wear_types(members);
+  }
   if (shared.automatic() || warned_moved) return;
+  if (detected_at.size() != member_tags.size()) { // a restart: from now
+    gather().tags(member_tags, members);
+    detected_at = members.spheres;
+    return;
+  }
+  // the member farthest from where it was found (the first in member order of a tie)
+  const std::pair<double, int> most = halo.farthest([this](int m, int i) {
+    return (Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]) - detected_at[m].x).norm();
+  });
+  if (!(most.first > tolerance)) return;
+  // that member at that distance from where it was found
+  membrane3d::GatheredSpheres farthest{
+      {member_tags[most.second]}, {{Eigen::Vector3d(most.first, 0, 0), 0.0}}, {}};
+  std::vector<membrane3d::Sphere> found{{Eigen::Vector3d::Zero(), 0.0}};
   const std::string moved =
-      membrane3d::moved_warning(members, detected_at, tolerance, last_detection, update->ntimestep);
+      membrane3d::moved_warning(farthest, found, tolerance, last_detection, update->ntimestep);
   if (!moved.empty()) warn(moved);
   warned_moved = !moved.empty();
 }
@@ -129,8 +158,34 @@ bool FixMembrane3d::detection_due()
     return automatic.can_have_changed(gather().for_auto(), platens, tolerance, d50, step, members);
   // platens moved beyond the tolerance (their images' links), an atom lost or gone from
   // the group (a restart read by a fix on another group)
-  return membrane3d::moved_apart(platens, detected_platens, tolerance) ||
-         gather().tags(member_tags, members) != member_tags.size();
+  return membrane3d::moved_apart(platens, detected_platens, tolerance) || !members_present();
+}
+
+// This step's members near this rank's own (collective): whether every member is still
+// an atom of the group. A member unusable or not between the platens stops the run.
+bool FixMembrane3d::members_present()
+{
+  if (halo.members() != member_tags.size() || halo_detections != detections ||
+      halo_detected != last_detection) {
+    std::vector<int> cells;
+    for (const auto &f : topology.facets)
+      for (const membrane3d::MembraneVertex &v : f) cells.push_back(v.sphere);
+    halo.set_members(member_tags, cells, 3);
+    halo_detections = detections;
+    halo_detected = last_detection;
+    halo_step = -1;
+  }
+  if (halo_step != update->ntimestep) {
+    halo_step = update->ntimestep;
+    double **x = atom->x;
+    const double *r = atom->radius;
+    const auto fault = [&](int i) {
+      return atom_is_faulty(x[i], 3, r[i]) || !(x[i][2] > platens.lo && x[i][2] < platens.hi);
+    };
+    // the gather of them all names the first faulty one on every rank
+    if (halo.refresh(groupbit, fault).fault) gather().tags(member_tags, members);
+  }
+  return halo.present() == member_tags.size();
 }
 
 void FixMembrane3d::post_force(int)
@@ -205,57 +260,85 @@ void FixMembrane3d::detect()
 
 void FixMembrane3d::place_and_apply()
 {
-  membrane3d::LateralSurface membrane;
+  if (!members_present())
+    fail("a topology of " + std::to_string(member_tags.size()) + " spheres placed on " +
+         std::to_string(halo.present()) +
+         "; the membrane found at the last detection cannot be placed");
+  std::vector<double> records;
+  halo.exchange(pack, records);
+  near.resize(halo.plan().needed.size());
+  for (std::size_t k = 0; k < near.size(); k++)
+    near[k] = {Eigen::Vector3d(records[4 * k], records[4 * k + 1], records[4 * k + 2]),
+               records[4 * k + 3]};
+  using namespace membrane3d;
+  MembranePart part;
   try {
-    membrane = membrane3d::place_membrane(topology, members.spheres, platens,
-                                          membrane3d::Vertices::outer_faces);
+    if (layout_plan != halo.plans_made)
+      layout = part_layout(topology, halo.cells(), halo.plan().owned, halo.plan().needed);
+    layout_plan = halo.plans_made;
+    part = place_part(layout, near, platens, pressure, Vertices::outer_faces);
   } catch (const std::exception &e) {
     fail(std::string(e.what()) + "; the membrane found at the last detection cannot be placed");
   }
-  const std::string open = membrane3d::open_warning(membrane, update->ntimestep);
+  // one reduction: the parts' sums, and whether rank 0 writes a frame
+  std::array<double, PART_SUMS + 1> sum;
+  std::copy(part.sums.begin(), part.sums.end(), sum.begin());
+  sum[PART_SUMS] = vtk.due(update->ntimestep) ? 1.0 : 0.0;
+  MPI_Allreduce(MPI_IN_PLACE, sum.data(), PART_SUMS + 1, MPI_DOUBLE, MPI_SUM, world);
+  LateralSurface rims;
+  rims.reaches_lo = sum[REACHES_LO] > 0;
+  rims.reaches_hi = sum[REACHES_HI] > 0;
+  const std::string open = open_warning(rims, update->ntimestep);
   if (!open.empty() && !warned_rim) warn(open);
   warned_rim = warned_rim || !open.empty();
-
-  std::vector<Eigen::Vector3d> load =
-      membrane3d::membrane_loads(membrane, members.spheres.size(), pressure);
-  Eigen::Vector3d net;
-  const std::string open_loads =
-      membrane3d::closure_problem(load, pressure, update->ntimestep, net);
+  const Eigen::Vector3d net(sum[NET_X], sum[NET_Y], sum[NET_Z]);
+  const std::string open_loads = closure_problem(net, sum[MAGNITUDE], pressure, update->ntimestep);
   if (!open_loads.empty()) fail(open_loads);
-  membrane3d::add_escape_loads(membrane, members.spheres, pressure, load);
+  std::array<double, PART_SUMS> whole;
+  std::copy_n(sum.begin(), PART_SUMS, whole.begin());
+  add_part_escapes(part, layout, near, whole, pressure);
 
   double **f = atom->f;
-  for (std::size_t k = 0; k < member_tags.size(); k++) {
-    const int i = owned_index(atom, member_tags[k]);
-    if (i < 0) continue;
-    for (int d = 0; d < 3; d++) f[i][d] += load[k][d];
-  }
+  for (std::size_t k = 0; k < part.load.size(); k++)
+    for (int d = 0; d < 3; d++) f[halo.owned_atoms()[k]][d] += part.load[k][d];
 
-  int on_surface = 0, escaped = 0;
-  for (membrane3d::Side s : membrane.side) {
-    on_surface += s == membrane3d::Side::surface;
-    escaped += s == membrane3d::Side::outside;
-  }
   centres_placed = false; // the volume through the centres when it is asked for
-  output[MEMBRANE_SPHERES] = on_surface;
-  output[ESCAPED_SPHERES] = escaped;
-  output[FACETS] = static_cast<double>(membrane.surface.facets.size());
+  output[MEMBRANE_SPHERES] = sum[ON_SURFACE];
+  output[ESCAPED_SPHERES] = sum[ESCAPED];
+  output[FACETS] = sum[CLIPPED];
   output[DETECTIONS] = detections;
   output[AXIAL_FORCE] = net.z();
   output[LATERAL_FORCE] = net.head<2>().norm();
-  const double outer = membrane3d::lateral_volume(membrane.surface);
+  const double outer = sum[VOLUME_SUM] / 2.0;
   output[OUTER_VOLUME] = outer;
-  output[OUTER_RADIUS] = membrane3d::equivalent_radius(outer, platens.hi - platens.lo);
-  if (vtk.due(update->ntimestep))
-    vtk.write(update->ntimestep, membrane3d::vtk_frame(membrane, members.spheres, pressure));
+  output[OUTER_RADIUS] = equivalent_radius(outer, platens.hi - platens.lo);
+  if (sum[PART_SUMS] > 0) write_frame();
 }
 
-// The membrane through the centres, placed on this step's spheres only for its volume.
+// The frame of the whole membrane: its members gathered on rank 0, placed there.
+void FixMembrane3d::write_frame()
+{
+  std::vector<double> all;
+  halo.gather_on_root(pack, all);
+  if (comm->me != 0) return;
+  std::vector<membrane3d::Sphere> spheres(member_tags.size());
+  for (std::size_t k = 0; k < spheres.size(); k++)
+    spheres[k] = {Eigen::Vector3d(all[4 * k], all[4 * k + 1], all[4 * k + 2]), all[4 * k + 3]};
+  const membrane3d::LateralSurface membrane = membrane3d::place_membrane(
+      topology, spheres, platens, membrane3d::Vertices::outer_faces);
+  vtk.write(update->ntimestep, membrane3d::vtk_frame(membrane, spheres, pressure));
+}
+
+// The membrane through the centres, placed on this step's spheres only for its volume:
+// each rank's facets, reduced (called on every rank, as thermo and variables do).
 double FixMembrane3d::compute_vector(int n)
 {
   if ((n == VOLUME || n == EQUIVALENT_RADIUS) && !centres_placed && !topology.facets.empty()) {
-    const double volume = membrane3d::lateral_volume(
-        membrane3d::place_membrane(topology, members.spheres, platens).surface);
+    double sum = membrane3d::place_part(layout, near, platens, pressure,
+                                        membrane3d::Vertices::centres)
+                     .sums[membrane3d::VOLUME_SUM];
+    MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
+    const double volume = sum / 2.0;
     output[VOLUME] = volume;
     output[EQUIVALENT_RADIUS] = membrane3d::equivalent_radius(volume, platens.hi - platens.lo);
     centres_placed = true;
@@ -308,7 +391,8 @@ double FixMembrane3d::memory_usage()
 {
   return static_cast<double>(member_tags.capacity() * sizeof(AtomId) +
                              topology.facets.capacity() * sizeof(topology.facets[0]) +
-                             (members.spheres.capacity() + detected_at.capacity()) *
+                             (members.spheres.capacity() + detected_at.capacity() +
+                              near.capacity()) *
                                  sizeof(membrane3d::Sphere)) +
-         automatic.memory_usage() + types.memory_usage();
+         automatic.memory_usage() + types.memory_usage() + halo.memory_usage();
 }

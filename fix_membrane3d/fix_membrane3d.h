@@ -24,6 +24,7 @@ FixStyle(membrane3d,FixMembrane3d)
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 #include "distributed_skin.h"
@@ -33,6 +34,8 @@ FixStyle(membrane3d,FixMembrane3d)
 #include "membrane3d_gather.h"
 #include "membrane3d_traffic.h"
 #include "membrane_fix.h"
+#include "member_halo.h"
+#include "membrane_part.h"
 
 namespace LAMMPS_NS {
 
@@ -87,7 +90,16 @@ class FixMembrane3d : public MembraneFix {
   double detections = 0.0;
 
   // this step
-  membrane3d::GatheredSpheres members; // the member atoms now, in member_tags' order
+  membrane3d::GatheredSpheres members; // the member atoms now (at a detection, every auto)
+  // placement: the members within two rings of this rank's own (member_halo.h), now
+  MemberHalo halo{lmp, 4, 2};
+  std::vector<membrane3d::Sphere> near; // halo.plan().needed's
+  membrane3d::PartLayout layout;         // what this rank places, for halo.plans_made:
+  double layout_plan = -1.0;
+  std::function<void(int, double *)> pack; // a member's record: position, radius
+  bigint halo_step = -1;                // refreshed for this step
+  double halo_detections = -1.0;        // ... and this topology
+  bigint halo_detected = -1;
   bool warned_rim = false;
   bool warned_moved = false; // a member far from where the membrane was found, once per run
   double output[OUTPUT_SIZE];
@@ -98,7 +110,9 @@ class FixMembrane3d : public MembraneFix {
   bool detection_due();
   void detect();
   void wear_types(const membrane3d::GatheredSpheres &g);
+  bool members_present();
   void place_and_apply();
+  void write_frame();
 };
 
 } // namespace LAMMPS_NS

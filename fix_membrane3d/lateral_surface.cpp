@@ -67,6 +67,7 @@ class PlatenClip {
   }
 
   LateralSurface result() && { return std::move(out_); }
+  std::size_t facets() const { return out_.surface.facets.size(); }
 
  private:
   std::int64_t n_ids_;
@@ -253,8 +254,9 @@ void check_placement(const MembraneTopology &topology, const std::vector<Sphere>
                                     std::to_string(spheres.size()));
 }
 
-// outer_face_offsets without the checks (place_membrane has made them)
-std::vector<Eigen::Vector3d> offsets_of_checked(const MembraneTopology &topology,
+} // namespace
+
+std::vector<Eigen::Vector3d> outer_face_offsets_unchecked(const MembraneTopology &topology,
                                                 const std::vector<Sphere> &spheres,
                                                 const Platens &platens)
 {
@@ -298,14 +300,12 @@ std::vector<Eigen::Vector3d> offsets_of_checked(const MembraneTopology &topology
   return offset;
 }
 
-} // namespace
-
 std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology,
                                                 const std::vector<Sphere> &spheres,
                                                 const Platens &platens)
 {
   check_placement(topology, spheres, platens);
-  return offsets_of_checked(topology, spheres, platens);
+  return outer_face_offsets_unchecked(topology, spheres, platens);
 }
 
 LateralSurface place_membrane(const MembraneTopology &topology, const std::vector<Sphere> &spheres,
@@ -315,11 +315,20 @@ LateralSurface place_membrane(const MembraneTopology &topology, const std::vecto
   std::vector<Eigen::Vector3d> vertex(spheres.size());
   for (std::size_t i = 0; i < spheres.size(); ++i) vertex[i] = spheres[i].x;
   if (at == Vertices::outer_faces) {
-    const std::vector<Eigen::Vector3d> o = offsets_of_checked(topology, spheres, platens);
+    const std::vector<Eigen::Vector3d> o = outer_face_offsets_unchecked(topology, spheres, platens);
     for (std::size_t i = 0; i < spheres.size(); ++i) vertex[i] += o[i];
   }
-  PlatenClip clip(3 * static_cast<std::int64_t>(spheres.size()), platens);
-  for (const auto &f : topology.facets) {
+  return clip_membrane(topology, vertex, platens);
+}
+
+LateralSurface clip_membrane(const MembraneTopology &topology,
+                             const std::vector<Eigen::Vector3d> &vertex, const Platens &platens,
+                             std::vector<int> *origin)
+{
+  PlatenClip clip(3 * static_cast<std::int64_t>(vertex.size()), platens);
+  if (origin) origin->clear();
+  for (std::size_t k = 0; k < topology.facets.size(); ++k) {
+    const auto &f = topology.facets[k];
     std::array<int, 3> id, sphere;
     std::array<Eigen::Vector3d, 3> x;
     for (int j = 0; j < 3; ++j) {
@@ -328,6 +337,7 @@ LateralSurface place_membrane(const MembraneTopology &topology, const std::vecto
       x[j] = image_position(vertex[sphere[j]], f[j].image, platens);
     }
     clip.add_facet(id, x, sphere);
+    if (origin) origin->resize(clip.facets(), static_cast<int>(k));
   }
   LateralSurface out = std::move(clip).result();
   out.side = topology.side;
@@ -377,14 +387,17 @@ void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> 
   if (std::find(membrane.side.begin(), membrane.side.end(), Side::outside) == membrane.side.end())
     return; // no escapee: no axis needed
   const Eigen::Vector2d axis = membrane_axis(membrane);
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    if (membrane.side.at(i) != Side::outside) continue;
-    const Eigen::Vector2d inwards = axis - spheres[i].x.head<2>();
-    const double distance = inwards.norm();
-    if (distance == 0) continue;
-    const double push = p * math_constants::PI * spheres[i].r * spheres[i].r / distance;
-    load.at(i) += Eigen::Vector3d(push * inwards.x(), push * inwards.y(), 0);
-  }
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    if (membrane.side.at(i) == Side::outside) load.at(i) += escape_push(spheres[i], axis, p);
+}
+
+Eigen::Vector3d escape_push(const Sphere &sphere, const Eigen::Vector2d &axis, double p)
+{
+  const Eigen::Vector2d inwards = axis - sphere.x.head<2>();
+  const double distance = inwards.norm();
+  if (distance == 0) return Eigen::Vector3d::Zero();
+  const double push = p * math_constants::PI * sphere.r * sphere.r / distance;
+  return Eigen::Vector3d(push * inwards.x(), push * inwards.y(), 0);
 }
 
 } // namespace membrane3d

@@ -104,12 +104,28 @@ std::vector<Eigen::Vector3d> outer_face_offsets(const MembraneTopology &topology
                                                 const std::vector<Sphere> &spheres,
                                                 const Platens &platens);
 
+// outer_face_offsets without its checks: the caller has made them, or places a part of
+// the membrane (membrane_part.h), whose spheres' offsets are exact when the topology
+// holds every facet on them.
+std::vector<Eigen::Vector3d> outer_face_offsets_unchecked(const MembraneTopology &topology,
+                                                          const std::vector<Sphere> &spheres,
+                                                          const Platens &platens);
+
 // The membrane on `spheres` (indexed as the topology): facets clipped at the platens,
 // corners, loads' weights, its vertices `at` the centres or the outer faces. Throws
 // std::invalid_argument for platens not in order, a centre not strictly between them,
 // or a facet whose sphere is not in `spheres`.
 LateralSurface place_membrane(const MembraneTopology &topology, const std::vector<Sphere> &spheres,
                               const Platens &platens, Vertices at = Vertices::centres);
+
+// place_membrane's facets clipped at the platens, their vertices at `vertex` (indexed as
+// the topology's spheres), without checks. Each facet is clipped alone (a cut on an edge
+// from the edge's lower-numbered vertex), so that any subset of the facets, numbered in
+// the same order, gives the same bits; `origin` gets the topology's facet of each
+// surface facet.
+LateralSurface clip_membrane(const MembraneTopology &topology,
+                             const std::vector<Eigen::Vector3d> &vertex, const Platens &platens,
+                             std::vector<int> *origin = nullptr);
 
 // detect_membrane, then place_membrane on the same spheres.
 LateralSurface lateral_surface(const std::vector<Sphere> &spheres, const Platens &platens,
@@ -126,6 +142,9 @@ Eigen::Vector2d membrane_axis(const LateralSurface &membrane);
 // axis (nothing for a sphere on the axis).
 void add_escape_loads(const LateralSurface &membrane, const std::vector<Sphere> &spheres, double p,
                       std::vector<Eigen::Vector3d> &load);
+
+// One escaped sphere's push towards the axis (zero on the axis).
+Eigen::Vector3d escape_push(const Sphere &sphere, const Eigen::Vector2d &axis, double p);
 
 } // namespace membrane3d
 

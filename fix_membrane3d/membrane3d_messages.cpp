@@ -43,6 +43,12 @@ std::string closure_problem(const std::vector<Eigen::Vector3d> &load, double pre
     net += f;
     magnitude += f.norm();
   }
+  return closure_problem(net, magnitude, pressure, step);
+}
+
+std::string closure_problem(const Eigen::Vector3d &net, double magnitude, double pressure,
+                            long long step)
+{
   // loads that overflow (an absurd pressure) are the input's fault, not the membrane's
   if (!std::isfinite(magnitude) && std::isfinite(pressure))
     return "the membrane's loads at step " + std::to_string(step) +

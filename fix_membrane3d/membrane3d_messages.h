@@ -30,6 +30,9 @@ std::string open_warning(const LateralSurface &membrane, long long step);
 // loads that have one.
 std::string closure_problem(const std::vector<Eigen::Vector3d> &load, double pressure,
                             long long step, Eigen::Vector3d &net);
+// The same from the loads' sum and the sum of their norms (summed over ranks).
+std::string closure_problem(const Eigen::Vector3d &net, double magnitude, double pressure,
+                            long long step);
 
 // A member of `now` more than the tolerance from where it was when the membrane was
 // found at step `since` (`at`, in the same order; of another size after a restart:
