@@ -1,5 +1,5 @@
 // fix membrane3d's figures of a run, like fix membrane2d's (membrane_gather.h): the
-// bytes each rank received in the fix's gathers, per step and per detection, the
+// bytes the busiest rank received from the fix, per step and per detection, the
 // detections, and the seconds the fix and its detections took on the slowest rank.
 // Printed at the end of each run to LIGGGHTS' screen and log, as a sentence and as a
 // `membrane3d_traffic key=value ...` line for programs (bench/scaling3d.py). The small
