@@ -8,6 +8,7 @@
 // CPU times of this process (the split between triangulation and flood: wall time).
 //   membrane3d_kinetic DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS [BUDGET_IN_MEAN_DIAMETERS...]
 // (several budgets: one run each)
+#include "dump_snapshots.h"
 #include "kinetic_flood.h"
 #include "platen_images.h"
 
@@ -15,7 +16,6 @@
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -24,29 +24,7 @@ namespace {
 
 using membrane3d::Sphere;
 
-struct Snapshot {
-  long step = 0;
-  std::vector<Sphere> spheres;
-};
-
-bool read_snapshot(std::ifstream &in, Snapshot &s)
-{
-  std::string line;
-  if (!std::getline(in, line)) return false; // ITEM: TIMESTEP
-  in >> s.step;
-  std::getline(in, line);
-  std::getline(in, line); // ITEM: NUMBER OF ATOMS
-  std::size_t n = 0;
-  in >> n;
-  std::getline(in, line);
-  for (int k = 0; k < 5; ++k) std::getline(in, line); // box bounds, ITEM: ATOMS
-  s.spheres.clear();
-  double id, r, x, y, z;
-  for (std::size_t k = 0; k < n && in >> id >> r >> x >> y >> z; ++k)
-    s.spheres.push_back({Eigen::Vector3d(x, y, z), r});
-  std::getline(in, line);
-  return s.spheres.size() == n && n > 0;
-}
+using bench::Snapshot;
 
 // The points of the flood: the spheres now and the images of `mirrored`'s entries.
 std::vector<Sphere> points(const membrane3d::Mirrored &mirrored, const std::vector<Sphere> &now,
@@ -81,14 +59,9 @@ int main(int argc, char **argv)
                  "[BUDGET_IN_MEAN_DIAMETERS...]\n";
     return 2;
   }
-  std::ifstream in(argv[1]);
   const membrane3d::Platens platens{std::atof(argv[2]), std::atof(argv[3])};
   std::vector<Snapshot> snapshots;
-  for (Snapshot s; read_snapshot(in, s);) snapshots.push_back(s);
-  if (snapshots.size() < 2) {
-    std::cerr << "fewer than two snapshots in " << argv[1] << "\n";
-    return 1;
-  }
+  if (!bench::read_snapshots(argv[1], snapshots)) return 1;
   double diameters = 0;
   for (const Sphere &s : snapshots[0].spheres) diameters += 2 * s.r;
   const double d = diameters / static_cast<double>(snapshots[0].spheres.size());

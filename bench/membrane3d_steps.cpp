@@ -11,6 +11,7 @@
 // all spheres are triangulated) and its time; and a run's first detection, from the
 // skin of the outermost spheres.
 //   membrane3d_steps DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS
+#include "dump_snapshots.h"
 #include "lateral_surface.h"
 #include "skin_flood.h"
 
@@ -18,7 +19,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <set>
 #include <string>
@@ -31,29 +31,7 @@ using Vertex = std::pair<int, int>; // (sphere, image)
 using FacetKey = std::array<Vertex, 3>;
 using CellKey = std::array<Vertex, 4>;
 
-struct Snapshot {
-  long step = 0;
-  std::vector<membrane3d::Sphere> spheres;
-};
-
-bool read_snapshot(std::ifstream &in, Snapshot &s)
-{
-  std::string line;
-  if (!std::getline(in, line)) return false; // ITEM: TIMESTEP
-  in >> s.step;
-  std::getline(in, line);
-  std::getline(in, line); // ITEM: NUMBER OF ATOMS
-  std::size_t n = 0;
-  in >> n;
-  std::getline(in, line);
-  for (int k = 0; k < 5; ++k) std::getline(in, line); // box bounds, ITEM: ATOMS
-  s.spheres.clear();
-  double id, r, x, y, z;
-  for (std::size_t k = 0; k < n && in >> id >> r >> x >> y >> z; ++k)
-    s.spheres.push_back({Eigen::Vector3d(x, y, z), r});
-  std::getline(in, line);
-  return s.spheres.size() == n && n > 0;
-}
+using bench::Snapshot;
 
 struct Found {
   std::set<FacetKey> facets;
@@ -115,14 +93,9 @@ int main(int argc, char **argv)
     std::cerr << "usage: membrane3d_steps DUMP ZLO ZHI TOLERANCE_IN_MEAN_DIAMETERS\n";
     return 2;
   }
-  std::ifstream in(argv[1]);
   const membrane3d::Platens platens{std::atof(argv[2]), std::atof(argv[3])};
   std::vector<Snapshot> snapshots;
-  for (Snapshot s; read_snapshot(in, s);) snapshots.push_back(s);
-  if (snapshots.size() < 2) {
-    std::cerr << "fewer than two snapshots in " << argv[1] << "\n";
-    return 1;
-  }
+  if (!bench::read_snapshots(argv[1], snapshots)) return 1;
   double diameters = 0;
   for (const auto &s : snapshots[0].spheres) diameters += 2 * s.r;
   const double tolerance = std::atof(argv[4]) * diameters / snapshots[0].spheres.size();

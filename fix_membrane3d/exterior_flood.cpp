@@ -1,5 +1,6 @@
 #include "exterior_flood.h"
 
+#include "flood_rules.h"
 #include "number_text.h"
 #include "power_flood.h"
 
@@ -46,9 +47,9 @@ namespace {
 // sample two spheres across is about r thick).
 constexpr double kFlatRms = 0.1;
 
-// "in one plane" or "on one line" when the spheres' centres (with their images) lie
-// within kFlatRms of one, else "".
-std::string flatness(const std::vector<Sphere> &spheres)
+} // namespace
+
+FlatTest flat_test(const std::vector<Sphere> &spheres)
 {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   double r = 0;
@@ -62,9 +63,18 @@ std::string flatness(const std::vector<Sphere> &spheres)
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (const Sphere &s : spheres) covariance += (s.x - mean) * (s.x - mean).transpose() / n;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance, Eigen::EigenvaluesOnly);
-  const double limit = kFlatRms * kFlatRms * r * r;
-  if (eigen.eigenvalues()[1] <= limit) return "on one line";
-  if (eigen.eigenvalues()[0] <= limit) return "in one plane";
+  return {eigen.eigenvalues(), kFlatRms * kFlatRms * r * r};
+}
+
+namespace {
+
+// "in one plane" or "on one line" when the spheres' centres (with their images) lie
+// within kFlatRms of one, else "".
+std::string flatness(const std::vector<Sphere> &spheres)
+{
+  const FlatTest t = flat_test(spheres);
+  if (t.eigenvalues[1] <= t.limit) return "on one line";
+  if (t.eigenvalues[0] <= t.limit) return "in one plane";
   return "";
 }
 
@@ -110,7 +120,7 @@ Boundary PowerFlood::boundary(FloodCells *cells) const
     if (flooded_[c->info()]) continue;
     for (int k = 0; k < 4; ++k)
       if (flooded_[c->neighbor(k)->info()] && !ignored_facet(c, k))
-        b.facets.push_back(outward_facet(c, k));
+        b.facets.push_back(flood_rules::outward_facet(c, k));
   }
   for (auto &f : b.facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
   std::sort(b.facets.begin(), b.facets.end());
@@ -134,41 +144,20 @@ void PowerFlood::export_cells(FloodCells &out) const
   out.other_group = other_group_;
 }
 
-// Across a platen (an edge with a sealed sphere) the tolerance doubles: a sphere and
-// its image are then linked when the sphere is within T of the platen.
-bool PowerFlood::linked(Vertex a, Vertex b) const
-{
-  const bool across = sealed_[a->info()] || sealed_[b->info()];
-  const Sphere &p = spheres_[a->info()], &q = spheres_[b->info()];
-  return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance_ : tolerance_);
-}
-
-// The facet of c opposite its vertex k: a wall when its three edges are links.
+// (the rules of flood_rules.h)
 bool PowerFlood::wall(Cell c, int k) const
 {
-  const Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3), d = c->vertex((k + 3) & 3);
-  return finite(a) && finite(b) && finite(d) && linked(a, b) && linked(b, d) && linked(a, d);
+  return flood_rules::wall(triangulation_, c, k, spheres_, sealed_, tolerance_);
 }
 
 bool PowerFlood::all_sealed(Cell c) const
 {
-  for (int k = 0; k < 4; ++k) {
-    const Vertex v = c->vertex(k);
-    if (finite(v) && !sealed_[v->info()]) return false;
-  }
-  return true;
+  return flood_rules::all_sealed(triangulation_, c, sealed_);
 }
 
-// A facet with the infinite vertex or only sealed spheres is no part of the membrane.
 bool PowerFlood::ignored_facet(Cell c, int k) const
 {
-  bool any_unsealed = false;
-  for (int j = 1; j < 4; ++j) {
-    const Vertex v = c->vertex((k + j) & 3);
-    if (!finite(v)) return true;
-    any_unsealed = any_unsealed || !sealed_[v->info()];
-  }
-  return !any_unsealed;
+  return flood_rules::ignored_facet(triangulation_, c, k, sealed_);
 }
 
 void PowerFlood::flood_from_outside()
@@ -225,18 +214,6 @@ void PowerFlood::keep_largest_dry_group()
       other_group_ = std::max(other_group_, size[g]);
   for (std::size_t i = 0; i < cells_.size(); ++i)
     if (!flooded_[i] && group[i] != keep) flooded_[i] = 1;
-}
-
-// The facet of the unflooded cell c opposite vertex k, counter-clockwise seen from
-// the flooded side (the vertex k is on the negative side of its normal).
-std::array<int, 3> PowerFlood::outward_facet(Cell c, int k) const
-{
-  Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3);
-  const Vertex d = c->vertex((k + 3) & 3), inner = c->vertex(k);
-  if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
-                        inner->point().point()) == CGAL::POSITIVE)
-    std::swap(a, b);
-  return {a->info(), b->info(), d->info()};
 }
 
 // Per sphere: on the membrane when its cells are both flooded and not, outside when

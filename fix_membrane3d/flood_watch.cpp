@@ -1,5 +1,7 @@
 #include "flood_watch.h"
 
+#include "determinant_margin.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <Eigen/Dense>
@@ -200,7 +202,7 @@ bool power_safe(const std::array<const Sphere *, 5> &p, double delta)
   }
   const double det = a.determinant();
   const double e = 2 * delta;
-  double first = 0, rows = 1, grown = 1, linear = 0;
+  double first = 0;
   std::array<double, 4> row_norm, row_change;
   for (int i = 0; i < 4; ++i) {
     // cofactors of row i
@@ -223,16 +225,7 @@ bool power_safe(const std::array<const Sphere *, 5> &p, double delta)
     row_norm[i] = a.row(i).norm();
     row_change[i] = e * (1 + (2 * q.norm() + e) / L);
   }
-  for (int i = 0; i < 4; ++i) {
-    rows *= row_norm[i];
-    grown *= row_norm[i] + row_change[i];
-    double others = row_change[i];
-    for (int j = 0; j < 4; ++j)
-      if (j != i) others *= row_norm[j];
-    linear += others;
-  }
-  const double rest = std::max(0.0, grown - rows - linear);
-  return first + rest + kRoundOff * rows < std::abs(det);
+  return determinant_margin(det, first, row_norm, row_change, kRoundOff);
 }
 
 class WatchBuilder {

@@ -1,5 +1,7 @@
 #include "kinetic_exterior.h"
 
+#include "flood_rules.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -48,37 +50,20 @@ void Exterior::flood(Boundary &boundary)
   record_links();
 }
 
-bool Exterior::linked(Vertex a, Vertex b) const
-{
-  const bool across = sealed_[a->info()] || sealed_[b->info()];
-  const Sphere &p = now_[a->info()], &q = now_[b->info()];
-  return (p.x - q.x).norm() - p.r - q.r <= (across ? 2 * tolerance_ : tolerance_);
-}
-
+// (the rules of flood_rules.h, at the present positions)
 bool Exterior::wall(Cell c, int k) const
 {
-  const Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3), d = c->vertex((k + 3) & 3);
-  return finite(a) && finite(b) && finite(d) && linked(a, b) && linked(b, d) && linked(a, d);
+  return flood_rules::wall(t_, c, k, now_, sealed_, tolerance_);
 }
 
 bool Exterior::all_sealed(Cell c) const
 {
-  for (int k = 0; k < 4; ++k) {
-    const Vertex v = c->vertex(k);
-    if (finite(v) && !sealed_[v->info()]) return false;
-  }
-  return true;
+  return flood_rules::all_sealed(t_, c, sealed_);
 }
 
 bool Exterior::ignored_facet(Cell c, int k) const
 {
-  bool any_unsealed = false;
-  for (int j = 1; j < 4; ++j) {
-    const Vertex v = c->vertex((k + j) & 3);
-    if (!finite(v)) return true;
-    any_unsealed = any_unsealed || !sealed_[v->info()];
-  }
-  return !any_unsealed;
+  return flood_rules::ignored_facet(t_, c, k, sealed_);
 }
 
 // (breadth first: a cell's way to the outside is short, so a change near the membrane
@@ -138,12 +123,7 @@ void Exterior::keep_largest_dry_group()
 
 std::array<int, 3> Exterior::outward_facet(Cell c, int k) const
 {
-  Vertex a = c->vertex((k + 1) & 3), b = c->vertex((k + 2) & 3);
-  const Vertex d = c->vertex((k + 3) & 3), inner = c->vertex(k);
-  if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
-                        inner->point().point()) == CGAL::POSITIVE)
-    std::swap(a, b);
-  return {a->info(), b->info(), d->info()};
+  return flood_rules::outward_facet(c, k);
 }
 
 std::vector<Side> Exterior::sides() const
@@ -172,27 +152,16 @@ double Exterior::threshold(int a, int b) const
   return sealed_[a] || sealed_[b] ? 2 * tolerance_ : tolerance_;
 }
 
-// The edges of the facets of the cells reached from outside: the links the flood reads.
+// The edges of the facets of the cells reached from outside: the links the flood reads,
+// anchored at the present positions (add_links with no motion from the anchor: its
+// subtracted motion is +0, which leaves the slack as it is to the bit).
 void Exterior::record_links()
 {
   links_.clear();
-  for (Cell c : cells_) {
-    if (c->info().wet != 1) continue;
-    for (int k = 0; k < 4; ++k) {
-      const Vertex v[3] = {c->vertex((k + 1) & 3), c->vertex((k + 2) & 3), c->vertex((k + 3) & 3)};
-      for (int i = 0; i < 3; ++i) {
-        const Vertex p = v[i], q = v[(i + 1) % 3];
-        if (!finite(p) || !finite(q)) continue;
-        const int a = std::min(p->info(), q->info()), b = std::max(p->info(), q->info());
-        const Sphere &x = now_[a], &y = now_[b]; // (the anchor)
-        const double distance = (x.x - y.x).norm(), gap = distance - x.r - y.r;
-        const double t = threshold(a, b);
-        links_.push_back({a, b, std::abs(gap - t) - kLinkRoundOff * (distance + t), gap <= t});
-      }
-    }
-  }
   anchor_.resize(now_.size());
   for (std::size_t i = 0; i < now_.size(); ++i) anchor_[i] = now_[i].x;
+  for (Cell c : cells_)
+    if (c->info().wet == 1) add_links(c);
   links_recorded_ = links_.size();
 }
 

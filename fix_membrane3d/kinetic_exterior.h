@@ -122,7 +122,6 @@ class Exterior {
 
   bool finite(Vertex v) const { return !t_.is_infinite(v); }
   double threshold(int a, int b) const;
-  bool linked(Vertex a, Vertex b) const;
   bool wall(Cell c, int k) const;
   bool all_sealed(Cell c) const;
   bool ignored_facet(Cell c, int k) const;

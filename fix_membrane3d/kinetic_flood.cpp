@@ -4,8 +4,6 @@
 #include "kinetic_triangulation.h"
 #include "power_flood.h"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,9 +18,6 @@ using kinetic::Vertex;
 
 namespace {
 
-// exterior_flood.cpp's test of a flat sample, to throw what exterior_boundary throws.
-constexpr double kFlatRms = 0.1;
-
 // The triangulation is made anew rather than repaired when the spheres to remove and
 // insert again are more than this share of all: removing and inserting a sphere costs
 // some 4 times its share of a triangulation.
@@ -35,22 +30,11 @@ constexpr double kRebuildShare = 4.0;
   throw FlatSample("the spheres enclose no volume for a membrane to wrap");
 }
 
+// exterior_flood.cpp's test of a flat sample, to throw what exterior_boundary throws
 void check_not_flat(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed)
 {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  double r = 0;
-  for (const Sphere &s : spheres) {
-    mean += s.x;
-    r += s.r;
-  }
-  const double n = static_cast<double>(spheres.size());
-  mean /= n;
-  r /= n;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Sphere &s : spheres) covariance += (s.x - mean) * (s.x - mean).transpose() / n;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance, Eigen::EigenvaluesOnly);
-  const double limit = kFlatRms * kFlatRms * r * r;
-  if (eigen.eigenvalues()[0] > limit) return;
+  const FlatTest t = flat_test(spheres);
+  if (t.eigenvalues[0] > t.limit) return;
   flat(spheres, sealed);
 }
 

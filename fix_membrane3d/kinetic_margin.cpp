@@ -1,5 +1,7 @@
 #include "kinetic_margin.h"
 
+#include "determinant_margin.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -98,23 +100,14 @@ struct PowerBound {
   {
     if (!valid) return false;
     const double e = 2 * delta;
-    double first = 0, rows = 1, grown = 1, linear = 0;
+    double first = 0;
     std::array<double, 4> row_change{};
     for (int i = 0; i < 4; ++i) {
       first += e * lin[i] + e * e * c3[i] / L;
       row_change[i] = e * (1 + (2 * qn[i] + e) / L);
     }
-    for (int i = 0; i < 4; ++i) {
-      rows *= row_norm[i];
-      grown *= row_norm[i] + row_change[i];
-      double others = row_change[i];
-      for (int j = 0; j < 4; ++j)
-        if (j != i) others *= row_norm[j];
-      linear += others;
-    }
     if (!std::isfinite(first)) return false;
-    const double rest = std::max(0.0, grown - rows - linear);
-    return first + rest + kRoundOff * rows < std::abs(det);
+    return determinant_margin(det, first, row_norm, row_change, kRoundOff);
   }
 };
 

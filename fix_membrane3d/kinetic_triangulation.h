@@ -6,6 +6,7 @@
 
 #include "flood_watch.h"
 #include "kinetic_flood.h"
+#include "power_flood.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_3.h>
@@ -48,10 +49,10 @@ struct CellState {
   long evaluated = -1;
 };
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb =
-    CGAL::Triangulation_vertex_base_with_info_3<int, K,
-                                                CGAL::Regular_triangulation_vertex_base_3<K>>;
+// the kernel, vertices (info: the sphere's index) and weights of power_flood.h
+using power::K;
+using power::Vb;
+using power::weighted_point;
 using Rcb = CGAL::Regular_triangulation_cell_base_3<K, CGAL::Triangulation_cell_base_3<K>,
                                                     CGAL::Discard_hidden_points>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<CellState, K, Rcb>;
@@ -59,11 +60,6 @@ using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
 using Triangulation = CGAL::Regular_triangulation_3<K, Tds>;
 using Cell = Triangulation::Cell_handle;
 using Vertex = Triangulation::Vertex_handle;
-
-inline K::Weighted_point_3 weighted_point(const Sphere &s)
-{
-  return K::Weighted_point_3(K::Point_3(s.x.x(), s.x.y(), s.x.z()), s.r * s.r);
-}
 
 // The certificates of a triangulation whose points have moved (kinetic_flood.h):
 // evaluated at the points the triangulation holds, margins from the references.

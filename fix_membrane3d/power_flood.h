@@ -42,6 +42,16 @@ inline K::Weighted_point_3 weighted_point(const Sphere &s)
 // the sphere (the flood's and the skin's check).
 void check_spheres(const std::vector<Sphere> &spheres);
 
+// exterior_boundary's test of a flat sample: the eigenvalues (ascending) of the
+// covariance of the spheres' centres (with their images) and the square of 0.1 mean
+// radii; the centres lie within that RMS distance of one plane when the first is at
+// most the limit, of one line when the second is.
+struct FlatTest {
+  Eigen::Vector3d eigenvalues;
+  double limit;
+};
+FlatTest flat_test(const std::vector<Sphere> &spheres);
+
 // exterior_boundary's checks of its arguments (std::invalid_argument).
 void check_flood_input(const std::vector<Sphere> &spheres, const std::vector<bool> &sealed,
                        double tolerance);
@@ -71,12 +81,10 @@ class PowerFlood {
   long kept_group_ = 0, other_group_ = 0;
 
   bool finite(power::Vertex v) const { return !triangulation_.is_infinite(v); }
-  bool linked(power::Vertex a, power::Vertex b) const;
   bool wall(power::Cell c, int k) const;
   bool ignored_facet(power::Cell c, int k) const;
   void flood_from_outside();
   void keep_largest_dry_group();
-  std::array<int, 3> outward_facet(power::Cell c, int k) const;
   std::vector<Side> sides(FloodCells *cells) const;
   void export_cells(FloodCells &out) const;
 };

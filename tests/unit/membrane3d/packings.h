@@ -1,6 +1,7 @@
 // Hand-made packings of equal spheres (radius 1/2, touching at spacing 1) for the
 // membrane3d surface tests: a simple-cubic block, a face-centred cubic block, and
-// the platens that touch their bottom and top layers; and a sample from a run.
+// the platens that touch their bottom and top layers; and a sample from a run. Also a
+// jittered simple-cubic block and the spheres of a flood that are not inside.
 #ifndef LIGGGHTS_MEMBRANE_TEST_PACKINGS_H
 #define LIGGGHTS_MEMBRANE_TEST_PACKINGS_H
 
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -85,6 +87,25 @@ inline double mean_diameter(const std::vector<Sphere> &s) {
   double d = 0;
   for (const Sphere &x : s) d += 2 * x.r / s.size();
   return d;
+}
+
+// A simple_cubic block, each sphere moved by up to `jitter` along each axis (a lattice
+// is cospherical throughout: ties, which the skin does not decide, it floods all).
+inline std::vector<Sphere> jittered_block(int nx, int ny, int nz, double jitter, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> move(-jitter, jitter);
+  std::vector<Sphere> s = simple_cubic(nx, ny, nz);
+  for (Sphere &x : s)
+    for (int d = 0; d < 3; ++d) x.x[d] += move(random);
+  return s;
+}
+
+// The spheres whose side is not inside (on the membrane or outside), ascending.
+inline std::vector<int> not_inside(const std::vector<membrane3d::Side> &side) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < side.size(); ++i)
+    if (side[i] != membrane3d::Side::inside) out.push_back(static_cast<int>(i));
+  return out;
 }
 
 } // namespace packings

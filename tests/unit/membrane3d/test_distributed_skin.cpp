@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
 namespace {
@@ -27,23 +26,8 @@ using membrane3d::Sphere;
 
 constexpr double kTolerance = 0.8;
 
-std::vector<Sphere> jittered_block(int nx, int ny, int nz, double jitter, unsigned seed)
-{
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> move(-jitter, jitter);
-  std::vector<Sphere> s = packings::simple_cubic(nx, ny, nz);
-  for (Sphere &x : s)
-    for (int d = 0; d < 3; ++d) x.x[d] += move(random);
-  return s;
-}
-
-std::vector<int> not_inside(const std::vector<Side> &side)
-{
-  std::vector<int> out;
-  for (std::size_t i = 0; i < side.size(); ++i)
-    if (side[i] != Side::inside) out.push_back(static_cast<int>(i));
-  return out;
-}
+using packings::jittered_block;
+using packings::not_inside;
 
 // The spheres of `from` with `pick` set (and their entries in `from`).
 struct Part {

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -20,33 +19,14 @@ using membrane3d::Platens;
 using membrane3d::Side;
 using membrane3d::Sphere;
 
-// A block of nx x ny x nz spheres of radius 1/2 on a unit lattice, each moved by up to
-// `jitter` along each axis (a lattice is cospherical throughout: ties, which the skin
-// does not decide, it floods all).
-std::vector<Sphere> jittered_block(int nx, int ny, int nz, double jitter, unsigned seed)
-{
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> move(-jitter, jitter);
-  std::vector<Sphere> s = packings::simple_cubic(nx, ny, nz);
-  for (Sphere &x : s)
-    for (int d = 0; d < 3; ++d) x.x[d] += move(random);
-  return s;
-}
+using packings::jittered_block;
+using packings::not_inside;
+using packings::same_topology;
 
 std::vector<bool> unsealed(std::size_t n)
 {
   return std::vector<bool>(n, false);
 }
-
-std::vector<int> not_inside(const std::vector<Side> &side)
-{
-  std::vector<int> out;
-  for (std::size_t i = 0; i < side.size(); ++i)
-    if (side[i] != Side::inside) out.push_back(static_cast<int>(i));
-  return out;
-}
-
-using packings::same_topology;
 
 constexpr double kTolerance = 0.8; // links the jittered squares across their diagonals (gap < 0.6)
 
