@@ -126,13 +126,8 @@ void FixMembrane3d::pre_force(int)
   const std::pair<double, int> most = halo.farthest([this](int m, int i) {
     return (Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]) - detected_at[m].x).norm();
   });
-  if (!(most.first > tolerance)) return;
-  // that member at that distance from where it was found
-  membrane3d::GatheredSpheres farthest{
-      {member_tags[most.second]}, {{Eigen::Vector3d(most.first, 0, 0), 0.0}}, {}};
-  std::vector<membrane3d::Sphere> found{{Eigen::Vector3d::Zero(), 0.0}};
-  const std::string moved =
-      membrane3d::moved_warning(farthest, found, tolerance, last_detection, update->ntimestep);
+  const std::string moved = membrane3d::moved_warning(
+      member_tags[most.second], most.first, tolerance, last_detection, update->ntimestep);
   if (!moved.empty()) warn(moved);
   warned_moved = !moved.empty();
 }

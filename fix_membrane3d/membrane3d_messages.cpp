@@ -79,9 +79,16 @@ std::string moved_warning(const GatheredSpheres &now, std::vector<Sphere> &at, d
       farthest = k;
     }
   }
-  if (!(most > tolerance)) return "";
-  return "membrane sphere " + std::to_string(now.tags[farthest]) + " has moved " +
-         number_text(most) + " since the membrane was found at step " + std::to_string(since) +
+  if (!(most > tolerance)) return ""; // (none at all: no member to name)
+  return moved_warning(now.tags[farthest], most, tolerance, since, step);
+}
+
+std::string moved_warning(AtomId tag, double moved, double tolerance, long long since,
+                          long long step)
+{
+  if (!(moved > tolerance)) return "";
+  return "membrane sphere " + std::to_string(tag) + " has moved " + number_text(moved) +
+         " since the membrane was found at step " + std::to_string(since) +
          ", more than the tolerance " + number_text(tolerance) + " (at step " +
          std::to_string(step) +
          "): that membrane can be out of date; find it more often (a smaller every, or every "

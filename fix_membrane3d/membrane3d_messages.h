@@ -39,6 +39,10 @@ std::string closure_problem(const Eigen::Vector3d &net, double magnitude, double
 // then `at` becomes `now`, measured from now on): that membrane can be out of date.
 std::string moved_warning(const GatheredSpheres &now, std::vector<Sphere> &at, double tolerance,
                           long long since, long long step);
+// The same for the member `tag` found farthest, `moved` from where it was ("" when
+// not more than the tolerance).
+std::string moved_warning(AtomId tag, double moved, double tolerance, long long since,
+                          long long step);
 
 // The ranks found the same members and facets: `lo` and `hi` the least and most of
 // (members, facets, sum of the member IDs) over the ranks.

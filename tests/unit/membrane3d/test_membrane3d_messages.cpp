@@ -101,6 +101,12 @@ TEST(Membrane3dMessages, FarthestMovedMember)
             "the tolerance 0.4 (at step 12): that membrane can be out of date; find it more "
             "often (a smaller every, or every auto)");
   EXPECT_EQ(membrane3d::moved_warning(now, at, 0.51, 10, 12), "");
+  // the same from the farthest member alone (the style finds it over the ranks)
+  EXPECT_EQ(membrane3d::moved_warning(6, 0.5, 0.4, 10, 12),
+            "membrane sphere 6 has moved 0.5 since the membrane was found at step 10, more than "
+            "the tolerance 0.4 (at step 12): that membrane can be out of date; find it more "
+            "often (a smaller every, or every auto)");
+  EXPECT_EQ(membrane3d::moved_warning(6, 0.4, 0.4, 10, 12), "");
 }
 
 TEST(Membrane3dMessages, RanksThatDisagree)
